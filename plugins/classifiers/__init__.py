@@ -1,0 +1,1 @@
+"""Built-in classifiers plugins, registered through the sdt_framework entry-point group."""

@@ -1,0 +1,1 @@
+"""Built-in features plugins, registered through the sdt_framework entry-point group."""

@@ -1,0 +1,27 @@
+"""ADXL345 profile: a mid-range MEMS accelerometer (paper Table 1, profile 1)."""
+
+from __future__ import annotations
+
+from sdt_framework import SensorSpec, hookimpl
+
+ADXL345 = SensorSpec(
+    name="adxl345",
+    description="Analog Devices ADXL345, +/-16 g, 13-bit SAR, 3200 Hz output data rate",
+    source="Analog Devices ADXL345 datasheet Rev. G; paper Table 1 (profile 1)",
+    sampling_rate_hz=3200,
+    full_scale_g=16,
+    adc_bits=13,
+    noise_density_ug_rthz=290,
+    mech_cutoff_hz=7000,
+    mech_order=2,
+    analog_cutoff_hz=1600,
+    analog_order=1,
+    digital_cutoff_hz=1599,
+    digital_order=1,
+)
+
+
+@hookimpl
+def register_sensors(register):
+    """Register the ADXL345 profile."""
+    register(ADXL345)

@@ -1,0 +1,27 @@
+"""ADXL357 profile: a high-end low-noise MEMS accelerometer (paper Table 1, profile 2)."""
+
+from __future__ import annotations
+
+from sdt_framework import SensorSpec, hookimpl
+
+ADXL357 = SensorSpec(
+    name="adxl357",
+    description="Analog Devices ADXL357, +/-40 g, 20-bit sigma-delta, 4000 Hz output data rate",
+    source="Analog Devices ADXL356/ADXL357 datasheet Rev. A; paper Table 1 (profile 2)",
+    sampling_rate_hz=4000,
+    full_scale_g=40,
+    adc_bits=20,
+    noise_density_ug_rthz=90,
+    mech_cutoff_hz=5500,
+    mech_order=2,
+    analog_cutoff_hz=1500,
+    analog_order=1,
+    digital_cutoff_hz=1000,
+    digital_order=8,
+)
+
+
+@hookimpl
+def register_sensors(register):
+    """Register the ADXL357 profile."""
+    register(ADXL357)

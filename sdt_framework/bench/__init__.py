@@ -1,0 +1,1 @@
+"""The benchmark orchestrator: scenarios, runs, results (SPEC sections 5-7)."""

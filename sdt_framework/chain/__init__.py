@@ -1,0 +1,1 @@
+"""The Sensor Digital Twin measurement chain (SPEC section 2)."""

@@ -1,0 +1,54 @@
+"""Entry point of the ``sdt`` command: the root app and user-error handling."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import typer
+
+from ..errors import SDTError
+from . import classifiers, features, plugins, sensors
+from .common import err_console
+
+app = typer.Typer(
+    name="sdt",
+    help="Sensor Digital Twin: benchmark accelerometers for vibration diagnostics on a laptop.",
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+    rich_markup_mode="rich",
+)
+app.add_typer(plugins.app, name="plugins")
+app.add_typer(sensors.app, name="sensors")
+app.add_typer(features.app, name="features")
+app.add_typer(classifiers.app, name="classifiers")
+
+
+@app.callback()
+def root(
+    ctx: typer.Context,
+    sensor_file: list[Path] = typer.Option(
+        [],
+        "--sensor-file",
+        help="A TOML sensor profile to add (repeatable). SDT_SENSOR_PATH adds folders of them.",
+    ),
+) -> None:
+    """Sensor Digital Twin: benchmark accelerometers for vibration diagnostics on a laptop.
+
+    Example:
+
+      sdt sensors list
+
+      sdt --sensor-file my_sensor.toml sensors show my-sensor
+    """
+    ctx.ensure_object(dict)
+    ctx.obj["sensor_files"] = sensor_file
+
+
+def main() -> None:
+    """Run ``sdt``; a user error prints one line and exits with status 2."""
+    try:
+        app()
+    except SDTError as exc:
+        err_console.print(f"[bold red]error:[/] {exc}", highlight=False, soft_wrap=True)
+        sys.exit(2)

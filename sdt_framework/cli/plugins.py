@@ -1,0 +1,47 @@
+"""``sdt plugins``: what is installed and whether it loaded."""
+
+from __future__ import annotations
+
+import typer
+
+from ..discovery import ENV_BLOCK, ENV_ONLY, ENV_TRACE
+from .common import print_json, registry, table
+
+app = typer.Typer(help="Inspect installed sdt-framework plugins.", no_args_is_help=True)
+
+
+@app.command("list")
+def list_plugins(
+    ctx: typer.Context,
+    as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
+) -> None:
+    f"""List every plugin with its distribution, version, status and what it provides.
+
+    Environment switches for setups with many plugins:
+
+      {ENV_ONLY}=name,dist   load only these plugins (entry-point or distribution names)
+
+      {ENV_BLOCK}=name,dist  never load these
+
+      {ENV_TRACE}=1          print every registration to stderr
+
+    Example:
+
+      SDT_BLOCK_PLUGINS=sdt-adxl355 sdt plugins list --json
+    """
+    plugins = registry(ctx).plugins()
+    if as_json:
+        print_json([p.as_dict() for p in plugins])
+        return
+    rows = [
+        [
+            p.name,
+            p.distribution,
+            p.version,
+            p.status,
+            "; ".join(f"{kind}: {', '.join(names)}" for kind, names in p.provides.items()),
+            p.error,
+        ]
+        for p in plugins
+    ]
+    table("Plugins", ["plugin", "distribution", "version", "status", "provides", "error"], rows)

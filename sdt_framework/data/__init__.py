@@ -1,0 +1,1 @@
+"""Datasets: recordings with metadata (SPEC section 4)."""

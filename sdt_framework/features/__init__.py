@@ -1,0 +1,1 @@
+"""Windowing and feature extraction (SPEC section 3)."""

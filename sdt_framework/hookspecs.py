@@ -1,0 +1,60 @@
+"""Every hook sdt-framework calls, in one place.
+
+Each hook receives a ``register`` callback and calls it once per thing the
+plugin provides. The callback validates the spec (a spec instance or a dict of
+its fields), stamps the plugin and distribution on it and rejects duplicate
+names, so a plugin never repeats those checks. A plugin module implements any
+subset of these hooks with ``@sdt_framework.hookimpl`` and is announced through
+the ``sdt_framework`` entry-point group.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import pluggy
+
+PROJECT = "sdt_framework"
+
+hookspec = pluggy.HookspecMarker(PROJECT)
+hookimpl = pluggy.HookimplMarker(PROJECT)
+
+Register = Callable[[Any], None]
+
+
+@hookspec
+def register_sensors(register: Register) -> None:
+    """Provide sensor profiles.
+
+    Called once when a registry is built. Call ``register(SensorSpec(...))``
+    (or ``register({...fields...})``) for each profile.
+    """
+
+
+@hookspec
+def register_features(register: Register) -> None:
+    """Provide feature sets.
+
+    Called once when a registry is built. Call ``register(FeatureSetSpec(...))``
+    for each set; ``compute(windows, fs)`` maps (n_windows, n_samples) to
+    (n_windows, n_features).
+    """
+
+
+@hookspec
+def register_classifiers(register: Register) -> None:
+    """Provide classifiers.
+
+    Called once when a registry is built. Call ``register(ClassifierSpec(...))``
+    for each classifier; ``ClassifierSpec.build(seed)`` makes a fresh estimator.
+    """
+
+
+@hookspec
+def register_datasets(register: Register) -> None:
+    """Provide datasets.
+
+    Called once when a registry is built. Call ``register(DatasetSpec(...))``
+    for each dataset; ``loader(path, **options)`` opens it.
+    """

@@ -1,0 +1,1 @@
+"""Reports: the paper's tables and figures from a results folder."""

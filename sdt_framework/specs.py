@@ -1,0 +1,217 @@
+"""Pydantic v2 specs for everything a plugin can provide.
+
+Specs are frozen and reject unknown fields, so a typo in a TOML sensor file or
+a plugin is an error rather than a silently ignored setting. Each spec carries
+``plugin`` and ``distribution`` provenance (stamped by the registry, excluded
+from the content hash) and a ``source`` reference (datasheet, paper, URL).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib
+import json
+import re
+from collections.abc import Callable
+from typing import Any, ClassVar
+
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+
+__all__ = [
+    "ClassifierSpec",
+    "DatasetSpec",
+    "FeatureSetSpec",
+    "SensorSpec",
+    "Spec",
+]
+
+_NAME = re.compile(r"^[a-z0-9][a-z0-9._-]*$")
+
+
+class Spec(BaseModel):
+    """Common base: a unique lower-case name, a description, provenance."""
+
+    model_config = ConfigDict(frozen=True, extra="forbid", arbitrary_types_allowed=True)
+
+    kind: ClassVar[str] = "spec"
+    _provenance: ClassVar[frozenset[str]] = frozenset({"plugin", "distribution"})
+
+    name: str = Field(description="Unique lower-case name used on the command line.")
+    description: str = Field(default="", description="One line saying what this is.")
+    source: str = Field(default="", description="Datasheet, paper or URL the values come from.")
+    plugin: str | None = Field(default=None, description="Plugin that registered it (stamped).")
+    distribution: str | None = Field(
+        default=None, description="Installed distribution providing it (stamped)."
+    )
+
+    @field_validator("name")
+    @classmethod
+    def _check_name(cls, value: str) -> str:
+        if not _NAME.match(value):
+            raise ValueError(
+                f"{value!r} is not a valid name: use lower-case letters, digits, '.', '_' or '-'"
+            )
+        return value
+
+    def content_dict(self) -> dict[str, Any]:
+        """The fields that define behaviour (provenance excluded), JSON-ready."""
+        return self.model_dump(mode="json", exclude=set(self._provenance))
+
+    def content_hash(self) -> str:
+        """A stable SHA-256 of the behaviour-defining fields, for cache keys."""
+        payload = json.dumps(
+            {"kind": self.kind, **self.content_dict()}, sort_keys=True, separators=(",", ":")
+        )
+        return hashlib.sha256(payload.encode()).hexdigest()
+
+
+class SensorSpec(Spec):
+    """A sensor profile: every parameter of the SDT measurement chain (SPEC section 2)."""
+
+    kind: ClassVar[str] = "sensor"
+
+    sampling_rate_hz: float = Field(gt=0, description="Output data rate F_target, Hz.")
+    full_scale_g: float = Field(gt=0, description="Full-scale range G_max, g (clip at +/-).")
+    adc_bits: int = Field(ge=1, le=32, description="ADC resolution B, bits.")
+    noise_density_ug_rthz: float = Field(ge=0, description="Noise spectral density, ug/sqrt(Hz).")
+    inject_noise: bool = Field(
+        default=True,
+        description="Add white noise from the NSD. False for a chain whose noise the "
+        "recording already carries (the reference).",
+    )
+    requantise: bool = Field(
+        default=True,
+        description="Apply saturation and quantisation. False for the chain that made the "
+        "recording: its ADC already digitised it, a second rounding would alter the data.",
+    )
+    mech_cutoff_hz: float = Field(gt=0, description="Mechanical low-pass cutoff f_mech, Hz.")
+    mech_order: int = Field(default=2, ge=1, le=12, description="Mechanical filter order.")
+    analog_cutoff_hz: float = Field(gt=0, description="Analog anti-alias cutoff f_ana, Hz.")
+    analog_order: int = Field(default=1, ge=1, le=12, description="Anti-alias filter order.")
+    digital_cutoff_hz: float | None = Field(
+        default=None, gt=0, description="On-chip digital low-pass cutoff f_dig, Hz (None: none)."
+    )
+    digital_order: int | None = Field(
+        default=None, ge=1, le=16, description="On-chip digital low-pass order."
+    )
+
+    @model_validator(mode="after")
+    def _check_digital(self) -> SensorSpec:
+        if (self.digital_cutoff_hz is None) != (self.digital_order is None):
+            raise ValueError("digital_cutoff_hz and digital_order must be given together")
+        nyquist = self.sampling_rate_hz / 2
+        if self.digital_cutoff_hz is not None and self.digital_cutoff_hz >= nyquist:
+            raise ValueError(
+                f"digital_cutoff_hz={self.digital_cutoff_hz:g} Hz is at or above the Nyquist "
+                f"frequency {nyquist:g} Hz of sampling_rate_hz={self.sampling_rate_hz:g}; "
+                f"lower it below {nyquist:g} Hz or remove the digital filter"
+            )
+        return self
+
+    @property
+    def quantisation_step_g(self) -> float:
+        """ADC step D = 2 G_max / 2**B, in g."""
+        return 2.0 * self.full_scale_g / 2.0**self.adc_bits
+
+
+class FeatureSetSpec(Spec):
+    """A named set of features computed on a batch of windows.
+
+    ``compute(windows, fs)`` takes a float array (n_windows, window_length) and
+    the sampling rate in Hz and returns (n_windows, len(feature_names)).
+    """
+
+    kind: ClassVar[str] = "feature set"
+    _provenance: ClassVar[frozenset[str]] = frozenset({"plugin", "distribution", "compute"})
+
+    feature_names: tuple[str, ...] = Field(min_length=1, description="Column names, in order.")
+    units: tuple[str, ...] = Field(min_length=1, description="Unit of each feature, in order.")
+    compute: Callable[..., Any] = Field(
+        exclude=True, description="compute(windows, fs) -> array (n_windows, n_features)."
+    )
+    bytes_per_value: int = Field(default=4, ge=1, description="Edge payload per value (float32).")
+
+    @model_validator(mode="after")
+    def _check_lengths(self) -> FeatureSetSpec:
+        if len(self.units) != len(self.feature_names):
+            raise ValueError(
+                f"{len(self.feature_names)} feature_names but {len(self.units)} units"
+            )
+        if len(set(self.feature_names)) != len(self.feature_names):
+            raise ValueError(f"duplicate feature names in {self.feature_names}")
+        return self
+
+    @property
+    def bytes_per_window(self) -> int:
+        """Edge payload of one window of one axis, bytes (paper: 32 B for paper8)."""
+        return self.bytes_per_value * len(self.feature_names)
+
+    def content_dict(self) -> dict[str, Any]:
+        """Behaviour-defining fields plus the compute function's qualified name."""
+        data = super().content_dict()
+        data["compute"] = f"{self.compute.__module__}:{self.compute.__qualname__}"
+        return data
+
+
+class ClassifierSpec(Spec):
+    """A scikit-learn-compatible classifier with fixed hyperparameters.
+
+    ``estimator`` is an import path ``"module:Class"``, imported only when an
+    estimator is built, so listing classifiers stays fast.
+    """
+
+    kind: ClassVar[str] = "classifier"
+
+    estimator: str = Field(description="Import path 'package.module:ClassName'.")
+    params: dict[str, Any] = Field(default_factory=dict, description="Hyperparameters.")
+    seed_param: str | None = Field(
+        default="random_state",
+        description="Constructor argument that takes the seed; None if deterministic.",
+    )
+
+    @field_validator("estimator")
+    @classmethod
+    def _check_path(cls, value: str) -> str:
+        if not re.match(r"^[A-Za-z_][\w.]*:[A-Za-z_]\w*$", value):
+            raise ValueError(f"{value!r} is not an import path of the form 'module:Class'")
+        return value
+
+    def estimator_class(self) -> type:
+        """Import and return the estimator class."""
+        module, _, attr = self.estimator.partition(":")
+        try:
+            return getattr(importlib.import_module(module), attr)
+        except (ImportError, AttributeError) as exc:
+            from .errors import SDTError
+
+            raise SDTError(
+                f"classifier {self.name!r}: cannot import {self.estimator} ({exc}); "
+                f"install the package that provides it"
+            ) from exc
+
+    def build(self, seed: int | None = None) -> Any:
+        """A fresh, unfitted estimator; ``seed`` goes to ``seed_param`` if set."""
+        kwargs = dict(self.params)
+        if self.seed_param is not None and seed is not None:
+            kwargs[self.seed_param] = seed
+        return self.estimator_class()(**kwargs)
+
+
+class DatasetSpec(Spec):
+    """A source of recordings.
+
+    ``loader(path, **options)`` returns a dataset object (see
+    ``sdt_framework.data``). ``requires_path`` is False for generated data.
+    """
+
+    kind: ClassVar[str] = "dataset"
+    _provenance: ClassVar[frozenset[str]] = frozenset({"plugin", "distribution", "loader"})
+
+    loader: Callable[..., Any] = Field(exclude=True, description="loader(path, **options).")
+    requires_path: bool = Field(default=True, description="Whether a path must be given.")
+
+    def content_dict(self) -> dict[str, Any]:
+        """Behaviour-defining fields plus the loader's qualified name."""
+        data = super().content_dict()
+        data["loader"] = f"{self.loader.__module__}:{self.loader.__qualname__}"
+        return data
