@@ -9,8 +9,10 @@ float32. Computed on a whole batch of windows at once: moments on the
 from __future__ import annotations
 
 import numpy as np
+import scipy.fft
 
 from sdt_framework import FeatureSetSpec, hookimpl
+from sdt_framework.hookspecs import Register
 
 G = 9.80665  # m/s^2 per g
 BAND_ACC_LOW_HZ = 10.0
@@ -18,12 +20,13 @@ BAND_KIN_HZ = (10.0, 1000.0)
 
 
 def compute(windows: np.ndarray, fs: float) -> np.ndarray:
-    """Eight features per window.
+    """Eight features per window, for a whole batch of windows at once.
 
     Parameters
     ----------
     windows
-        Acceleration in g, shape (n_windows, n_samples).
+        Acceleration in g, shape (n_windows, n_samples). Each window is
+        mean-centred here too, so a direct call matches :func:`extract`.
     fs
         Sampling rate, Hz.
 
@@ -33,33 +36,45 @@ def compute(windows: np.ndarray, fs: float) -> np.ndarray:
         float32, shape (n_windows, 8): sigma [g], S [-], K [-] (Pearson, normal
         = 3), CF [-], A_RMS [g], A_Peak [g], V_RMS [mm/s], D_RMS [um]. A
         constant window has S = 0, K = 0 and CF = 0 (no variation to describe).
+
+    Notes
+    -----
+    Moments come from products (``x*x``, not ``x**3``, which is an order of
+    magnitude slower) and row dot products; the spectrum is one batched real
+    FFT. With A_k = 2|X_k|/N, the band sums of eq. 5 are matrix-vector products
+    of the power |X_k|^2 with 1/(2 pi f_k)^2 and 1/(2 pi f_k)^4.
     """
     x = np.asarray(windows, dtype=np.float64)
-    n = x.shape[1]
+    n_windows, n = x.shape
     xc = x - x.mean(axis=1, keepdims=True)
 
-    m2 = np.mean(xc**2, axis=1)
-    m3 = np.mean(xc**3, axis=1)
-    m4 = np.mean(xc**4, axis=1)
+    sq = xc * xc
+    m2 = sq.mean(axis=1)
+    m3 = np.einsum("ij,ij->i", sq, xc) / n
+    m4 = np.einsum("ij,ij->i", sq, sq) / n
+    del sq
     flat = m2 <= 0
     safe_m2 = np.where(flat, 1.0, m2)
     sigma = np.sqrt(m2)
     skew = np.where(flat, 0.0, m3 / safe_m2**1.5)
     kurt = np.where(flat, 0.0, m4 / safe_m2**2)
-    crest = np.where(flat, 0.0, np.max(np.abs(xc), axis=1) / np.sqrt(safe_m2))
+    peak = np.maximum(xc.max(axis=1), -xc.min(axis=1))
+    crest = np.where(flat, 0.0, peak / np.sqrt(safe_m2))
 
-    amp = 2.0 * np.abs(np.fft.rfft(xc, axis=1)) / n
     freqs = np.fft.rfftfreq(n, d=1.0 / fs)
-    acc_band = (freqs >= BAND_ACC_LOW_HZ) & (freqs <= fs / 2)
-    a_band = amp[:, acc_band]
-    a_rms = np.sqrt(np.sum(a_band**2, axis=1) / 2)
-    a_peak = a_band.max(axis=1) if a_band.shape[1] else np.zeros(len(x))
+    first = int(np.searchsorted(freqs, BAND_ACC_LOW_HZ))  # bins f_k >= 10 Hz up to fs/2
+    spectrum = scipy.fft.rfft(xc, axis=1, workers=-1)[:, first:]
+    del xc
+    a_sq = (spectrum.real**2 + spectrum.imag**2) * (4.0 / n**2)  # A_k^2, g^2
+    f_band = freqs[first:]
+    a_rms = np.sqrt(a_sq.sum(axis=1) / 2)
+    a_peak = np.sqrt(a_sq.max(axis=1)) if f_band.size else np.zeros(n_windows)
 
-    kin = (freqs >= BAND_KIN_HZ[0]) & (freqs <= BAND_KIN_HZ[1])
-    omega = 2 * np.pi * freqs[kin]
-    acc_ms2 = amp[:, kin] * G
-    v_rms = np.sqrt(np.sum((acc_ms2 / omega) ** 2, axis=1) / 2) * 1e3
-    d_rms = np.sqrt(np.sum((acc_ms2 / omega**2) ** 2, axis=1) / 2) * 1e6
+    kin = (f_band >= BAND_KIN_HZ[0]) & (f_band <= BAND_KIN_HZ[1])
+    omega2 = (2 * np.pi * f_band[kin]) ** 2
+    a_kin = a_sq[:, kin] * G**2  # (m/s^2)^2
+    v_rms = np.sqrt(a_kin @ (1.0 / omega2) / 2) * 1e3
+    d_rms = np.sqrt(a_kin @ (1.0 / omega2**2) / 2) * 1e6
 
     return np.column_stack([sigma, skew, kurt, crest, a_rms, a_peak, v_rms, d_rms]).astype(
         np.float32
@@ -77,6 +92,6 @@ PAPER8 = FeatureSetSpec(
 
 
 @hookimpl
-def register_features(register):
+def register_features(register: Register) -> None:
     """Register the `paper8` feature set."""
     register(PAPER8)

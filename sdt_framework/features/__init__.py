@@ -1,1 +1,42 @@
-"""Windowing and feature extraction (SPEC section 3)."""
+"""Windowing and feature extraction (SPEC section 3).
+
+Public API
+----------
+cut_windows, Windows
+    Non-overlapping 0.64 s windows after a 0.1 s settling discard, per acquisition.
+extract, FeatureExtractor, FeatureTable
+    Validate a signal, window and centre it, compute a feature set, check the result.
+feature, Feature
+    Decorator turning ``f(windows, fs) -> (n_windows,)`` into a registrable feature.
+compose, resolve_feature_set
+    ``"paper8+env_bpfo"``: feature sets composed by name.
+read_feature_table, write_feature_table
+    CSV / Parquet output with units attached.
+"""
+
+from __future__ import annotations
+
+from .compose import ComposedFeatureSetSpec, compose, resolve_feature_set
+from .extract import FeatureExtractor, check_feature_output, extract
+from .table import FeatureTable, read_feature_table, write_feature_table
+from .user import Feature, feature
+from .windowing import SETTLE_S, WINDOW_S, Windows, cut_windows, samples_for
+
+__all__ = [
+    "SETTLE_S",
+    "WINDOW_S",
+    "ComposedFeatureSetSpec",
+    "Feature",
+    "FeatureExtractor",
+    "FeatureTable",
+    "Windows",
+    "check_feature_output",
+    "compose",
+    "cut_windows",
+    "extract",
+    "feature",
+    "read_feature_table",
+    "resolve_feature_set",
+    "samples_for",
+    "write_feature_table",
+]

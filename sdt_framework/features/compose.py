@@ -1,0 +1,122 @@
+"""Compose feature sets by name: ``"paper8+env_bpfo"`` is paper8's columns then env_bpfo's.
+
+A composed set is resolved on demand from registered parts and never
+registered itself (its ``+`` name is reserved for composition). Its compute
+hands the same centred windows to each part, checks each part's output (so an
+error names the part that misbehaved) and concatenates the columns.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from pydantic import Field, field_validator
+
+from ..errors import SDTError
+from ..specs import _NAME, FeatureSetSpec
+from .extract import check_feature_output
+
+if TYPE_CHECKING:
+    from ..registry import Registry
+
+__all__ = ["ComposedFeatureSetSpec", "compose", "resolve_feature_set"]
+
+SEPARATOR = "+"
+
+
+class ComposedFeatureSetSpec(FeatureSetSpec):
+    """A feature set made of other feature sets, columns in part order."""
+
+    parts: tuple[FeatureSetSpec, ...] = Field(min_length=2, description="The composed sets.")
+
+    @field_validator("name")
+    @classmethod
+    def _check_name(cls, value: str) -> str:
+        pieces = value.split(SEPARATOR)
+        if len(pieces) < 2 or not all(_NAME.match(p) for p in pieces):
+            raise ValueError(f"{value!r} is not a composed name such as 'paper8+env_bpfo'")
+        return value
+
+    @property
+    def bytes_per_window(self) -> int:
+        """Edge payload of one window of one axis: the sum over the parts."""
+        return sum(part.bytes_per_window for part in self.parts)
+
+    def content_dict(self) -> dict[str, Any]:
+        """The parts' behaviour-defining fields, for cache keys."""
+        data = super().content_dict()
+        data["parts"] = [part.content_dict() for part in self.parts]
+        return data
+
+
+def compose(parts: Sequence[FeatureSetSpec]) -> FeatureSetSpec:
+    """One feature set computing every part's features, columns concatenated.
+
+    Parameters
+    ----------
+    parts
+        Feature sets in column order; one part is returned unchanged.
+
+    Raises
+    ------
+    SDTError
+        No parts, or a feature name present in two parts (both are named).
+    """
+    parts = tuple(parts)
+    if not parts:
+        raise SDTError("compose needs at least one feature set")
+    if len(parts) == 1:
+        return parts[0]
+    owner: dict[str, str] = {}
+    for part in parts:
+        for feature_name in part.feature_names:
+            if feature_name in owner:
+                raise SDTError(
+                    f"feature {feature_name!r} is provided by both {owner[feature_name]!r} and "
+                    f"{part.name!r}; compose sets whose feature names differ"
+                )
+            owner[feature_name] = part.name
+    name = SEPARATOR.join(part.name for part in parts)
+
+    def compute(windows: np.ndarray, fs: float) -> np.ndarray:
+        n_windows = windows.shape[0]
+        return np.concatenate(
+            [check_feature_output(p.compute(windows, fs), n_windows, p) for p in parts], axis=1
+        )
+
+    compute.__qualname__ = f"compose[{name}]"
+    return ComposedFeatureSetSpec(
+        name=name,
+        description="Composed: "
+        + "; ".join(f"{p.name} ({', '.join(p.feature_names)})" for p in parts),
+        source=", ".join(p.source for p in parts if p.source),
+        feature_names=tuple(f for p in parts for f in p.feature_names),
+        units=tuple(u for p in parts for u in p.units),
+        compute=compute,
+        parts=parts,
+    )
+
+
+def resolve_feature_set(registry: Registry, name: str) -> FeatureSetSpec:
+    """The feature set called ``name``, composing ``"a+b+c"`` from registered parts.
+
+    Parameters
+    ----------
+    registry
+        Where the parts are registered.
+    name
+        A registered name (``"paper8"``) or names joined by ``+``
+        (``"paper8+env_bpfo"``); spaces around ``+`` are ignored.
+
+    Raises
+    ------
+    SDTError
+        An empty part, an unknown part (with the closest registered name), or
+        duplicate feature names across parts.
+    """
+    pieces = [piece.strip() for piece in name.split(SEPARATOR)]
+    if not all(pieces):
+        raise SDTError(f"feature set {name!r} has an empty part; write e.g. 'paper8+env_bpfo'")
+    return compose([registry.feature_set(piece) for piece in pieces])
