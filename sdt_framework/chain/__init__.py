@@ -1,1 +1,47 @@
-"""The Sensor Digital Twin measurement chain (SPEC section 2)."""
+"""The Sensor Digital Twin measurement chain (SPEC section 2).
+
+Public API
+----------
+degrade(x, fs, sensor, seed=0, *, noise=True, label="", first_index=0, ...)
+    What a sensor would have recorded of a 1-D signal or a 2-D batch.
+compile_chain(sensor, fs), build_stages(sensor, fs), Chain
+    The chain as an ordered tuple of stages, cached per (profile, rate).
+LowPass, Sample, WhiteNoise, Quantise, Stage, RunContext
+    The stages, each usable on its own, and the protocol a new stage follows.
+noise_check(sensor, ...), NoiseCheck, plot_noise_check(result, path)
+    The zero-motion noise validation of paper section 3.1 / Table 2.
+ChainInputError
+    The one-line error for a recording or rate the chain cannot take.
+"""
+
+from __future__ import annotations
+
+from .chain import Chain, build_stages, compile_chain, degrade
+from .errors import ChainInputError
+from .filters import design_lowpass, is_skipped, lowpass_gain
+from .noise_check import NoiseCheck, WindowStats, noise_check, window_stats
+from .noise_plot import plot_noise_check
+from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise, sample_grid
+
+__all__ = [
+    "Chain",
+    "ChainInputError",
+    "LowPass",
+    "NoiseCheck",
+    "Quantise",
+    "RunContext",
+    "Sample",
+    "Stage",
+    "WhiteNoise",
+    "WindowStats",
+    "build_stages",
+    "compile_chain",
+    "degrade",
+    "design_lowpass",
+    "is_skipped",
+    "lowpass_gain",
+    "noise_check",
+    "plot_noise_check",
+    "sample_grid",
+    "window_stats",
+]

@@ -1,0 +1,206 @@
+"""The stages of the measurement chain, each a small object usable on its own.
+
+A stage maps a float64 batch ``(acquisitions, samples)`` at ``fs_in`` to a
+batch at ``fs_out`` along the last axis; it never loops over samples. Adding a
+stage to the chain means writing one more class with ``name``, ``fs_in``,
+``fs_out`` and ``apply(x, ctx)`` (the :class:`Stage` protocol) and inserting it
+in the tuple :func:`sdt_framework.chain.build_stages` returns.
+"""
+
+from __future__ import annotations
+
+import os
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from fractions import Fraction
+from functools import lru_cache
+from typing import Protocol, runtime_checkable
+
+import numpy as np
+from numpy.typing import NDArray
+from scipy.signal import sosfilt
+
+from ..seeding import rng
+
+__all__ = [
+    "LowPass",
+    "Quantise",
+    "RunContext",
+    "Sample",
+    "Stage",
+    "WhiteNoise",
+    "sample_count",
+    "sample_grid",
+]
+
+Batch = NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class RunContext:
+    """What a stage may need beyond the samples: seeds and switches of one call.
+
+    ``acquisition_ids[i]`` names row ``i`` of the batch for seeding, so a row
+    gets the same noise whether it is degraded in a batch or alone.
+    """
+
+    seed: int = 0
+    acquisition_ids: tuple[int | str, ...] = ()
+    noise: bool = True
+    threads: int = field(default_factory=lambda: len(os.sched_getaffinity(0)))
+
+
+@runtime_checkable
+class Stage(Protocol):
+    """One block of the chain: ``apply`` maps a batch at ``fs_in`` to ``fs_out``."""
+
+    name: str
+    fs_in: float
+
+    @property
+    def fs_out(self) -> float:
+        """Rate of the output, Hz."""
+        ...
+
+    def apply(self, x: Batch, ctx: RunContext) -> Batch:
+        """Process ``x`` (acquisitions x samples) and return the new batch."""
+        ...
+
+
+def _sosfilt_rows(sos: NDArray[np.float64], x: Batch, threads: int) -> Batch:
+    """``sosfilt`` along the last axis, rows split across threads (sosfilt drops the GIL).
+
+    Each row is filtered by the same C loop as alone, so the result is
+    bit-identical to filtering the rows one by one.
+    """
+    n_jobs = min(threads, x.shape[0])
+    if n_jobs < 2:
+        return sosfilt(sos, x, axis=-1)
+    chunks = np.array_split(x, n_jobs, axis=0)
+    with ThreadPoolExecutor(n_jobs) as pool:
+        parts = list(pool.map(lambda c: sosfilt(sos, c, axis=-1), chunks))
+    return np.concatenate(parts, axis=0)
+
+
+@dataclass(frozen=True)
+class LowPass:
+    """A causal IIR low-pass in SOS form, zero initial conditions (stages 1, 2 and 5)."""
+
+    name: str
+    fs_in: float
+    sos: NDArray[np.float64] = field(repr=False)
+
+    @property
+    def fs_out(self) -> float:
+        """Same as ``fs_in``: filtering keeps the rate."""
+        return self.fs_in
+
+    def apply(self, x: Batch, ctx: RunContext) -> Batch:
+        """Filter every row along the last axis."""
+        # sosfilt wants a writable buffer; the cached design stays read-only
+        return _sosfilt_rows(np.array(self.sos), x, ctx.threads)
+
+
+def sample_count(n: int, fs_in: float, fs_out: float) -> int:
+    """M = floor((N - 1) F_target / F_ref) + 1, computed exactly (no float rounding)."""
+    return int((n - 1) * Fraction(fs_out) / Fraction(fs_in)) + 1
+
+
+@lru_cache(maxsize=64)
+def sample_grid(
+    n: int, fs_in: float, fs_out: float
+) -> tuple[NDArray[np.intp], NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
+    """Index arithmetic of the ADC sampling, once per (N, F_ref, F_target).
+
+    Returns ``(j, delta, dx, at_end)`` such that sample m is
+    ``(x[j+1] - x[j]) / dx * delta + x[j]`` (``x[N-1]`` where ``at_end``): the
+    same operations, in the same order, as ``numpy.interp(m / F_target,
+    n / F_ref, x)``, so the result is bit-identical to it.
+    """
+    t_ref = np.arange(n) / fs_in
+    t_out = np.arange(sample_count(n, fs_in, fs_out)) / fs_out
+    j = np.clip(np.searchsorted(t_ref, t_out, side="right") - 1, 0, n - 2)
+    delta = t_out - t_ref[j]
+    dx = t_ref[j + 1] - t_ref[j]
+    at_end = t_out >= t_ref[-1]
+    for arr in (j, delta, dx, at_end):
+        arr.setflags(write=False)
+    return j, delta, dx, at_end
+
+
+@dataclass(frozen=True)
+class Sample:
+    """ADC sampling at ``fs_out`` by linear interpolation, no anti-alias (stage 3)."""
+
+    fs_in: float
+    target_hz: float
+    name: str = "sample"
+
+    @property
+    def fs_out(self) -> float:
+        """The sensor's output data rate."""
+        return self.target_hz
+
+    def apply(self, x: Batch, ctx: RunContext) -> Batch:
+        """Interpolate every row at t_m = m / F_target."""
+        j, delta, dx, at_end = sample_grid(x.shape[-1], self.fs_in, self.target_hz)
+        y0 = x[:, j]
+        out = (x[:, j + 1] - y0) / dx * delta + y0
+        out[:, at_end] = x[:, -1:]
+        return out
+
+
+@dataclass(frozen=True)
+class WhiteNoise:
+    """Additive white Gaussian noise, sigma = NSD sqrt(F/2) (stage 4, paper eq. 2).
+
+    Row i draws from ``seeding.rng(ctx.seed, ctx.acquisition_ids[i])``.
+    """
+
+    fs_in: float
+    nsd_ug_rthz: float
+    name: str = "noise"
+
+    @property
+    def fs_out(self) -> float:
+        """Same as ``fs_in``."""
+        return self.fs_in
+
+    @property
+    def sigma_g(self) -> float:
+        """Noise standard deviation in g: NSD (ug/sqrt(Hz) -> g/sqrt(Hz)) x sqrt(F/2)."""
+        return self.nsd_ug_rthz * 1e-6 * float(np.sqrt(self.fs_in / 2))
+
+    def apply(self, x: Batch, ctx: RunContext) -> Batch:
+        """Add the noise of each row's acquisition id (nothing if ``ctx.noise`` is False)."""
+        if not ctx.noise:
+            return x
+        if len(ctx.acquisition_ids) != x.shape[0]:
+            raise ValueError(f"{len(ctx.acquisition_ids)} acquisition ids for {x.shape[0]} rows")
+        z = np.stack([rng(ctx.seed, i).standard_normal(x.shape[-1]) for i in ctx.acquisition_ids])
+        return x + self.sigma_g * z
+
+
+@dataclass(frozen=True)
+class Quantise:
+    """Saturation to [-G_max, G_max] then rounding to D = 2 G_max / 2**B (stage 6, eq. 4)."""
+
+    fs_in: float
+    full_scale_g: float
+    bits: int
+    name: str = "quantise"
+
+    @property
+    def fs_out(self) -> float:
+        """Same as ``fs_in``."""
+        return self.fs_in
+
+    @property
+    def step_g(self) -> float:
+        """Quantisation step D, g."""
+        return 2.0 * self.full_scale_g / 2.0**self.bits
+
+    def apply(self, x: Batch, ctx: RunContext) -> Batch:
+        """Clip, then x_out = D round(x / D)."""
+        step = self.step_g
+        return step * np.round(np.clip(x, -self.full_scale_g, self.full_scale_g) / step)
