@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import typer
 
-from ..discovery import ENV_BLOCK, ENV_ONLY, ENV_TRACE
 from .common import print_json, registry, table
 
 app = typer.Typer(help="Inspect installed sdt-framework plugins.", no_args_is_help=True)
@@ -15,15 +14,15 @@ def list_plugins(
     ctx: typer.Context,
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
 ) -> None:
-    f"""List every plugin with its distribution, version, status and what it provides.
+    """List every plugin with its distribution, version, status and what it provides.
 
     Environment switches for setups with many plugins:
 
-      {ENV_ONLY}=name,dist   load only these plugins (entry-point or distribution names)
+      SDT_PLUGINS=name,dist   load only these plugins (entry-point or distribution names)
 
-      {ENV_BLOCK}=name,dist  never load these
+      SDT_BLOCK_PLUGINS=name,dist never load these
 
-      {ENV_TRACE}=1          print every registration to stderr
+      SDT_TRACE_HOOKS=1 print every registration to stderr
 
     Example:
 

@@ -1,0 +1,7 @@
+"""``python -m sdt_framework`` runs the ``sdt`` command."""
+
+from __future__ import annotations
+
+from .cli.main import main
+
+main()

@@ -1,0 +1,159 @@
+"""Conformance checks that plugin authors run on their own plugin.
+
+``check_plugin(my_plugin_module)`` registers the plugin in a fresh registry,
+checks that every spec it provides validates, that its names do not collide
+with the installed plugins, and that the object each spec builds behaves as
+its kind requires (a sensor degrades a signal onto its ADC grid, a feature set
+returns one finite float32 row per window, a classifier fits and predicts
+reproducibly, a dataset yields loadable recordings). sdt-framework runs the
+same checks on every built-in plugin in its own test suite.
+
+Example
+-------
+>>> from sdt_framework.conformance import check_plugin
+>>> import my_sdt_plugin
+>>> check_plugin(my_sdt_plugin)          # raises ConformanceError on failure
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from .errors import SDTError
+from .registry import Registry, build_registry
+from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
+
+__all__ = ["ConformanceError", "check_plugin", "check_spec"]
+
+
+class ConformanceError(SDTError, AssertionError):
+    """A plugin that does not behave as its kind requires."""
+
+
+def _fail(spec: Spec, message: str) -> None:
+    raise ConformanceError(f"{spec.kind} {spec.name!r} ({spec.plugin}): {message}")
+
+
+def _check_sensor(spec: SensorSpec) -> None:
+    from .chain import degrade
+
+    fs = 20000.0
+    if spec.sampling_rate_hz > fs:
+        fs = float(spec.sampling_rate_hz)
+    t = np.arange(int(fs)) / fs
+    x = 0.5 * np.sin(2 * np.pi * 80.0 * t)[None, :].repeat(2, axis=0)
+    y, rate = degrade(x, fs, spec, seed=1)
+    if rate != spec.sampling_rate_hz:
+        _fail(spec, f"output rate {rate} != sampling_rate_hz {spec.sampling_rate_hz}")
+    if y.ndim != 2 or y.shape[0] != 2 or not np.all(np.isfinite(y)):
+        _fail(spec, f"degrade returned shape {y.shape} or non-finite values")
+    if spec.requantise:
+        if np.max(np.abs(y)) > spec.full_scale_g:
+            _fail(spec, "output exceeds the full scale")
+        steps = y / spec.quantisation_step_g
+        if not np.allclose(steps, np.round(steps), atol=1e-6):
+            _fail(spec, "output is not on the quantisation grid")
+    y2, _ = degrade(x, fs, spec, seed=1)
+    if not np.array_equal(y, y2):
+        _fail(spec, "the same seed gave different outputs")
+
+
+def _check_feature_set(spec: FeatureSetSpec) -> None:
+    rng = np.random.default_rng(0)
+    fs = 3200.0
+    windows = rng.normal(size=(4, 2048))
+    windows -= windows.mean(axis=1, keepdims=True)
+    out = np.asarray(spec.compute(windows, fs))
+    if out.shape != (4, len(spec.feature_names)):
+        _fail(spec, f"compute returned shape {out.shape}, expected (4, {len(spec.feature_names)})")
+    if not np.issubdtype(out.dtype, np.floating) or not np.all(np.isfinite(out)):
+        _fail(spec, f"compute returned dtype {out.dtype} or non-finite values")
+
+
+def _check_classifier(spec: ClassifierSpec) -> None:
+    rng = np.random.default_rng(0)
+    n = 200  # enough for minibatch learners with early stopping to take several steps
+    X = np.vstack([rng.normal(-2, 1, size=(n, 3)), rng.normal(2, 1, size=(n, 3))])
+    y = np.repeat([0, 1], n)
+    predictions = []
+    for _ in range(2):
+        estimator = spec.build(seed=7)
+        for method in ("fit", "predict"):
+            if not callable(getattr(estimator, method, None)):
+                _fail(spec, f"estimator {type(estimator).__name__} has no {method}()")
+        estimator.fit(X, y)
+        predictions.append(np.asarray(estimator.predict(X)))
+    if predictions[0].shape != (2 * n,):
+        _fail(spec, f"predict returned shape {predictions[0].shape}, expected ({2 * n},)")
+    if not np.array_equal(predictions[0], predictions[1]):
+        _fail(spec, "two estimators built with the same seed disagree")
+    if np.mean(predictions[0] == y) < 0.9:
+        _fail(spec, "cannot separate two well-separated Gaussian blobs")
+
+
+def _check_dataset(spec: DatasetSpec) -> None:
+    if spec.requires_path:
+        return  # needs user data; its loader is exercised by the plugin's own tests
+    dataset = spec.loader(None, duration=1.0)
+    recordings = dataset.recordings()
+    if not recordings:
+        _fail(spec, "yields no recordings")
+    data = recordings[0].load()
+    if data.ndim != 2 or not np.all(np.isfinite(data)):
+        _fail(spec, f"load() returned shape {data.shape} or non-finite values")
+
+
+_CHECKS: dict[type[Spec], Callable[[Any], None]] = {
+    SensorSpec: _check_sensor,
+    FeatureSetSpec: _check_feature_set,
+    ClassifierSpec: _check_classifier,
+    DatasetSpec: _check_dataset,
+}
+
+
+def check_spec(spec: Spec) -> None:
+    """Check one spec's behaviour for its kind; raise ConformanceError on failure."""
+    _CHECKS[type(spec)](spec)
+
+
+def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec]:
+    """Register ``plugin`` alone, check it, and return the specs it provides.
+
+    Parameters
+    ----------
+    plugin
+        A plugin module or object implementing sdt-framework hooks.
+    installed
+        Registry of the other plugins to check name clashes against (default:
+        everything installed; an installed copy of ``plugin`` itself, with an
+        identical definition, is not a clash).
+    """
+    fresh = build_registry(entry_points=False)
+    info = fresh.register_plugin(plugin)
+    if info.status != "loaded":
+        raise ConformanceError(f"plugin {info.name!r} failed to register: {info.error}")
+    specs: list[Spec] = [
+        *fresh.sensors(), *fresh.feature_sets(), *fresh.classifiers(), *fresh.datasets()
+    ]
+    if not specs:
+        raise ConformanceError(f"plugin {info.name!r} registers nothing")
+    installed = installed if installed is not None else build_registry()
+    taken = {
+        SensorSpec: installed.sensors(),
+        FeatureSetSpec: installed.feature_sets(),
+        ClassifierSpec: installed.classifiers(),
+        DatasetSpec: installed.datasets(),
+    }
+    for spec in specs:
+        for other in taken[type(spec)]:
+            # The plugin itself, when installed, provides the identical definition.
+            if other.name == spec.name and other.content_hash() != spec.content_hash():
+                raise ConformanceError(
+                    f"{spec.kind} {spec.name!r} is already provided by plugin "
+                    f"{other.plugin!r} ({other.distribution}); choose another name"
+                )
+        check_spec(spec)
+    return specs

@@ -1,0 +1,44 @@
+"""Shared fixtures: fake installed distributions, built in a temp folder.
+
+Following flake8's approach, a test that needs a third-party plugin writes a
+module and a ``*.dist-info`` folder with ``entry_points.txt`` into a temporary
+directory on ``sys.path``; importlib.metadata then finds it exactly as it would
+find a pip-installed distribution.
+"""
+
+from __future__ import annotations
+
+import importlib
+import sys
+import textwrap
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import pytest
+
+FakeDist = Callable[..., Path]
+
+
+@pytest.fixture
+def fake_dist(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[FakeDist]:
+    """Factory: ``fake_dist("dist-name", {"ep-name": "module"}, {"module": "source"})``."""
+    root = tmp_path / "site"
+    root.mkdir()
+    monkeypatch.syspath_prepend(str(root))
+    added: list[str] = []
+
+    def make(dist: str, entry_points: dict[str, str], modules: dict[str, str]) -> Path:
+        for module, source in modules.items():
+            (root / f"{module}.py").write_text(textwrap.dedent(source))
+            added.append(module)
+        info = root / f"{dist.replace('-', '_')}-1.2.3.dist-info"
+        info.mkdir()
+        (info / "METADATA").write_text(f"Metadata-Version: 2.1\nName: {dist}\nVersion: 1.2.3\n")
+        lines = "\n".join(f"{name} = {target}" for name, target in entry_points.items())
+        (info / "entry_points.txt").write_text(f"[sdt_framework]\n{lines}\n")
+        importlib.invalidate_caches()
+        return root
+
+    yield make
+    for module in added:
+        sys.modules.pop(module, None)
