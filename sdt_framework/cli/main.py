@@ -9,6 +9,7 @@ import typer
 
 from ..errors import SDTError
 from . import classifiers, features, plugins, sensors
+from .chain import register as register_chain_commands
 from .common import err_console
 
 app = typer.Typer(
@@ -22,6 +23,7 @@ app.add_typer(plugins.app, name="plugins")
 app.add_typer(sensors.app, name="sensors")
 app.add_typer(features.app, name="features")
 app.add_typer(classifiers.app, name="classifiers")
+register_chain_commands(app)
 
 
 @app.callback()
