@@ -65,7 +65,7 @@ def check_feature_output(values: object, n_windows: int, spec: FeatureSetSpec) -
     if bad.any():
         row, col = (int(i) for i in np.argwhere(bad)[0])
         raise SDTError(
-            f"{where}: feature {spec.feature_names[col]!r} is {array[row, col]!r} in window "
+            f"{where}: feature {spec.feature_names[col]!r} is {float(array[row, col])!r} in window "
             f"{row} (not finite in float32); {int(bad.sum())} bad value(s) in total"
         )
     return out
@@ -88,7 +88,7 @@ def _check_signal(x: object) -> np.ndarray:
             if array.ndim == 1
             else f"acquisition {index[0]}, sample {index[1]}"
         )
-        raise SDTError(f"signal has a non-finite value {array[index]!r} at {where}")
+        raise SDTError(f"signal has a non-finite value {float(array[index])!r} at {where}")
     return array
 
 
