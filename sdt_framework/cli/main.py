@@ -9,6 +9,7 @@ import typer
 
 from ..errors import SDTError
 from . import classifiers, features, plugins, sensors
+from . import dataset as dataset_cli
 from .chain import register as register_chain_commands
 from .common import err_console
 
@@ -23,6 +24,7 @@ app.add_typer(plugins.app, name="plugins")
 app.add_typer(sensors.app, name="sensors")
 app.add_typer(features.app, name="features")
 app.add_typer(classifiers.app, name="classifiers")
+app.add_typer(dataset_cli.app, name="dataset")
 register_chain_commands(app)
 
 

@@ -1,0 +1,159 @@
+"""Parse and validate NLN-EMP CSV files (header ``time,0,1,...``) with pyarrow.
+
+The fast path is pyarrow's multi-threaded CSV reader with every column typed
+float64. pyarrow's errors do not say which row failed, so on failure the file
+is scanned once more, line by line, to find the first offending line: the
+error a user sees names the file, the line and what is wrong. Non-finite and
+empty values and an irregular time column are checked on the parsed arrays.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.csv as pacsv
+
+from .recording import DataFileError
+
+__all__ = ["CsvHeader", "parse_nln_csv", "read_header"]
+
+
+@dataclass(frozen=True)
+class CsvHeader:
+    """What the first and last lines of an NLN-EMP CSV say, without parsing it."""
+
+    columns: tuple[str, ...]
+    time_step_s: float
+    n_rows: int
+
+    @property
+    def sampling_rate_hz(self) -> float:
+        """1 / time step, rounded to 1 mHz (the step is written in decimal)."""
+        return round(1.0 / self.time_step_s, 3)
+
+
+def _check_columns(path: Path, columns: list[str]) -> None:
+    expected = ["time", *map(str, range(len(columns) - 1))]
+    if len(columns) < 2 or columns != expected:
+        raise DataFileError(
+            f"{path}: line 1: header {','.join(columns)!r} is not 'time,0,1,...' "
+            f"(NLN-EMP format: a time column then one column per acquisition)"
+        )
+
+
+def _last_line(path: Path, size: int) -> bytes:
+    with open(path, "rb") as handle:
+        handle.seek(max(0, size - 4096))
+        tail = handle.read().rstrip(b"\r\n")
+    return tail.rsplit(b"\n", 1)[-1]
+
+
+def read_header(path: str | os.PathLike[str]) -> CsvHeader:
+    """Columns, time step and row count from the first three and the last line.
+
+    Cheap (reads a few kB) so that discovering a large archive is instant;
+    :func:`parse_nln_csv` later checks every row.
+    """
+    path = Path(path)
+    with open(path, "rb") as handle:
+        head = [handle.readline() for _ in range(3)]
+    columns = head[0].decode("utf-8", "replace").strip().split(",")
+    _check_columns(path, columns)
+    try:
+        t0, t1 = (float(line.split(b",", 1)[0]) for line in head[1:3])
+        t_last = float(_last_line(path, path.stat().st_size).split(b",", 1)[0])
+    except (ValueError, IndexError):
+        raise DataFileError(
+            f"{path}: lines 2-3 or the last line have no numeric time value; "
+            f"need at least two data rows"
+        ) from None
+    step = t1 - t0
+    if not step > 0:
+        raise DataFileError(f"{path}: line 3: time does not increase (step {step!r} s)")
+    return CsvHeader(tuple(columns), step, round((t_last - t0) / step) + 1)
+
+
+def _locate(path: Path, n_columns: int) -> str:
+    """Scan the file to name the first ragged or non-numeric line."""
+    with open(path, encoding="utf-8", errors="replace") as handle:
+        next(handle, None)
+        for number, line in enumerate(handle, start=2):
+            cells = line.rstrip("\r\n").split(",")
+            if len(cells) != n_columns:
+                return f"line {number}: expected {n_columns} values, found {len(cells)}"
+            for index, cell in enumerate(cells):
+                try:
+                    float(cell)
+                except ValueError:
+                    name = "time" if index == 0 else str(index - 1)
+                    return f"line {number}, column {name!r}: {cell!r} is not a number"
+    return "unreadable content"
+
+
+def _check_values(path: Path, table: pa.Table, columns: list[str]) -> np.ndarray:
+    data = np.empty((len(columns), table.num_rows), dtype=np.float64)
+    for i, name in enumerate(columns):
+        column = table.column(name)
+        if column.null_count:
+            row = int(np.flatnonzero(column.is_null().to_numpy(zero_copy_only=False))[0])
+            raise DataFileError(f"{path}: line {row + 2}, column {name!r}: empty value")
+        data[i] = column.to_numpy()
+    bad = ~np.isfinite(data)
+    if bad.any():
+        col, row = np.argwhere(bad)[0]
+        raise DataFileError(
+            f"{path}: line {row + 2}, column {columns[col]!r}: non-finite value "
+            f"{data[col, row]!r}"
+        )
+    return data
+
+
+def parse_nln_csv(path: str | os.PathLike[str], expected_step_s: float | None = None) -> np.ndarray:
+    """Parse one NLN-EMP CSV into float64 (n_acquisitions, n_rows), checking every value.
+
+    Parameters
+    ----------
+    path
+        The CSV file.
+    expected_step_s
+        Time step the rows must follow (default: the step of the first two rows).
+
+    Raises
+    ------
+    DataFileError
+        Wrong header, ragged row, non-numeric text, empty or non-finite value,
+        or an irregular time column; the message names the file and line.
+    """
+    path = Path(path)
+    with open(path, "rb") as handle:
+        columns = handle.readline().decode("utf-8", "replace").strip().split(",")
+    _check_columns(path, columns)
+    try:
+        table = pacsv.read_csv(
+            path,
+            read_options=pacsv.ReadOptions(use_threads=True, block_size=8 << 20),
+            convert_options=pacsv.ConvertOptions(
+                column_types={name: pa.float64() for name in columns},
+                null_values=[""],
+                strings_can_be_null=False,
+            ),
+        )
+    except pa.ArrowInvalid:
+        raise DataFileError(f"{path}: {_locate(path, len(columns))}") from None
+    data = _check_values(path, table, columns)
+    if data.shape[1] < 2:
+        raise DataFileError(f"{path}: fewer than two data rows")
+    time = data[0]
+    step = expected_step_s if expected_step_s is not None else time[1] - time[0]
+    off = np.abs(np.diff(time) - step) > 0.25 * step
+    if off.any():
+        row = int(np.flatnonzero(off)[0]) + 1
+        raise DataFileError(
+            f"{path}: line {row + 2}: time {time[row]!r} s breaks the {step:g} s step "
+            f"(missing, repeated or shuffled rows)"
+        )
+    return data[1:]

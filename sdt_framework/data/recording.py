@@ -1,0 +1,203 @@
+"""Recordings and datasets: metadata that is cheap, signals that are loaded lazily.
+
+A :class:`Recording` is one channel of one physical run (all its acquisitions).
+Its metadata (machine, condition, severity, run, channel, rate, shape) is known
+without reading the signal, so listing a dataset of tens of gigabytes is
+instant; :meth:`Recording.load` reads the samples only when asked, one file at
+a time. A :class:`Dataset` holds the recordings it found plus a list of
+:class:`Skipped` entries: bad input is never dropped silently, it is reported
+with the file (and row) and counted.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..errors import SDTError
+
+__all__ = ["DataFileError", "Dataset", "Recording", "Skipped", "measurement_groups"]
+
+#: consecutive 12 s acquisitions forming one 60 s measurement (SPEC section 4)
+ACQUISITIONS_PER_MEASUREMENT = 5
+
+
+class DataFileError(SDTError):
+    """A data file that cannot be used; the message names the file and the row."""
+
+
+def measurement_groups(n_acquisitions: int) -> tuple[int, ...]:
+    """Measurement index of each acquisition: column ``i`` belongs to group ``i // 5``."""
+    return tuple(i // ACQUISITIONS_PER_MEASUREMENT for i in range(n_acquisitions))
+
+
+@dataclass(frozen=True)
+class Skipped:
+    """Something found but not used: the file (or directory) and why."""
+
+    path: str
+    reason: str
+
+    def as_dict(self) -> dict[str, str]:
+        """JSON-ready form."""
+        return {"path": self.path, "reason": self.reason}
+
+
+@dataclass(frozen=True)
+class Recording:
+    """One channel of one run: metadata plus a lazy loader.
+
+    Attributes
+    ----------
+    dataset, machine, speed, condition, severity, run, channel
+        Where the signal comes from. ``condition`` is the class label,
+        ``severity`` the fault level (None for healthy), ``run`` the physical
+        run (a condition directory, or a manifest ``recording_id``): the unit
+        of a train/test split.
+    recording_id
+        Unique per run x channel.
+    sampling_rate_hz, units
+        Rate of the stored samples; units of the source file (``load`` returns g).
+    n_acquisitions, samples_per_acquisition
+        Shape of ``load()``.
+    measurement
+        Measurement group of each acquisition (60 s = five 12 s acquisitions).
+    source
+        File path, or ``"synthetic"``.
+    """
+
+    dataset: str
+    machine: str
+    speed: str | None
+    condition: str
+    severity: int | None
+    run: str
+    channel: str
+    recording_id: str
+    sampling_rate_hz: float
+    units: str
+    n_acquisitions: int
+    samples_per_acquisition: int
+    measurement: tuple[int, ...]
+    source: str
+    reader: Callable[[], np.ndarray] = field(repr=False, compare=False, hash=False)
+
+    def load(self) -> np.ndarray:
+        """Read the signal: float64 array (n_acquisitions, samples_per_acquisition) in g.
+
+        Raises
+        ------
+        DataFileError
+            If the file is malformed or does not match the metadata; the
+            message names the file and row.
+        """
+        data = np.asarray(self.reader(), dtype=np.float64)
+        expected = (self.n_acquisitions, self.samples_per_acquisition)
+        if data.shape != expected:
+            raise DataFileError(
+                f"{self.source}: recording {self.recording_id!r} has shape {data.shape}, "
+                f"its metadata says {expected}"
+            )
+        return data
+
+    def metadata(self) -> dict[str, Any]:
+        """JSON-ready metadata (no samples)."""
+        return {
+            "dataset": self.dataset,
+            "machine": self.machine,
+            "speed": self.speed,
+            "condition": self.condition,
+            "severity": self.severity,
+            "run": self.run,
+            "channel": self.channel,
+            "recording_id": self.recording_id,
+            "sampling_rate_hz": self.sampling_rate_hz,
+            "units": self.units,
+            "n_acquisitions": self.n_acquisitions,
+            "samples_per_acquisition": self.samples_per_acquisition,
+            "measurement": list(self.measurement),
+            "source": self.source,
+        }
+
+
+class Dataset:
+    """A named collection of recordings plus what was skipped while finding them.
+
+    Subclasses only discover recordings; loading, failure bookkeeping and the
+    summary live here once.
+    """
+
+    def __init__(self, name: str, recordings: list[Recording], skipped: list[Skipped]) -> None:
+        self.name = name
+        self._recordings = list(recordings)
+        self._skipped = list(skipped)
+
+    def recordings(self) -> list[Recording]:
+        """Every usable recording (metadata only; nothing is read)."""
+        return list(self._recordings)
+
+    @property
+    def skipped(self) -> list[Skipped]:
+        """Files, directories and rows that were found but not used, with the reason."""
+        return list(self._skipped)
+
+    def runs(self) -> dict[str, list[Recording]]:
+        """Recordings grouped by (machine, run): the unit of a train/test split."""
+        out: dict[str, list[Recording]] = {}
+        for rec in self._recordings:
+            out.setdefault(f"{rec.machine}/{rec.run}", []).append(rec)
+        return out
+
+    def load(self, recording: Recording) -> np.ndarray | None:
+        """Load one recording; a bad file is moved to :attr:`skipped` and None returned."""
+        try:
+            return recording.load()
+        except DataFileError as exc:
+            self._recordings = [r for r in self._recordings if r is not recording]
+            self._skipped.append(Skipped(recording.source, str(exc)))
+            return None
+
+    def iter_loaded(self) -> Iterator[tuple[Recording, np.ndarray]]:
+        """Yield (recording, samples) for every recording that loads; bad ones are skipped."""
+        for rec in self.recordings():
+            data = self.load(rec)
+            if data is not None:
+                yield rec, data
+
+    def validate(self) -> list[Skipped]:
+        """Read every recording once (warming any cache); return what newly failed."""
+        before = len(self._skipped)
+        for _ in self.iter_loaded():
+            pass
+        return self._skipped[before:]
+
+    def describe(self) -> dict[str, Any]:
+        """Summary for ``sdt dataset inspect``: recordings, skipped entries and counts."""
+        recs = self._recordings
+        return {
+            "dataset": self.name,
+            "recordings": [r.metadata() for r in recs],
+            "skipped": [s.as_dict() for s in self._skipped],
+            "summary": {
+                "recordings": len(recs),
+                "runs": len(self.runs()),
+                "machines": sorted({r.machine for r in recs}),
+                "conditions": dict(sorted(Counter(r.condition for r in recs).items())),
+                "channels": sorted({r.channel for r in recs}),
+                "acquisitions": sum(r.n_acquisitions for r in recs),
+                "skipped": len(self._skipped),
+            },
+        }
+
+    def summary_line(self) -> str:
+        """One line: how many recordings, runs and skipped entries."""
+        s = self.describe()["summary"]
+        return (
+            f"{self.name}: {s['recordings']} recordings in {s['runs']} runs "
+            f"({', '.join(s['machines']) or 'no machines'}), {s['acquisitions']} acquisitions; "
+            f"{s['skipped']} skipped"
+        )

@@ -1,0 +1,115 @@
+"""The ``synthetic-pump`` dataset: generated recordings behind the Recording interface.
+
+Metadata is known without generating anything; ``Recording.load()`` generates
+its run (all selected channels at once, since channels share their sources)
+and keeps only the most recent run in memory, so loading channels of a run in
+sequence generates it once and memory stays bounded by one run
+(5 channels x acquisitions x duration x 20 kHz x 8 bytes).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable
+from functools import partial
+
+import numpy as np
+
+from ..errors import SDTError
+from . import synth_model as m
+from .recording import Dataset, Recording, measurement_groups
+from .synth import FS_HZ, generate_run
+
+__all__ = ["DEFAULTS", "SyntheticPump", "open_synthetic"]
+
+DEFAULTS = {"seed": 0, "acquisitions": 1, "duration": 12.0}
+
+
+def _select(value: str | Iterable[str] | None, known: Iterable[str], what: str) -> list[str]:
+    known = list(known)
+    if value is None:
+        return known
+    chosen = [value] if isinstance(value, str) else [str(v) for v in value]
+    unknown = [v for v in chosen if v not in known]
+    if unknown:
+        raise SDTError(f"synthetic-pump: unknown {what} {', '.join(map(repr, unknown))}; "
+                       f"available: {', '.join(known)}")
+    return [k for k in known if k in chosen]
+
+
+class SyntheticPump(Dataset):
+    """Generated NLN-EMP-like recordings (see :func:`open_synthetic`)."""
+
+    def __init__(self, *, seed: int, acquisitions: int, duration: float,
+                 machines: list[str], channels: list[str], conditions: list[str] | None) -> None:
+        self.seed, self.acquisitions, self.duration = seed, acquisitions, duration
+        self.channels = tuple(channels)
+        self._last: tuple[tuple[str, str], dict[str, np.ndarray]] | None = None
+        n = round(duration * FS_HZ)
+        recordings = []
+        for name in machines:
+            machine = m.MACHINES[name]
+            for condition, levels in machine.conditions:
+                if conditions is not None and condition not in conditions:
+                    continue
+                for level in range(1, levels + 1):
+                    run = f"{condition} {level}"
+                    for ch in channels:
+                        recordings.append(Recording(
+                            dataset="synthetic-pump", machine=name, speed=machine.speed,
+                            condition=condition,
+                            severity=None if condition == "healthy" else level, run=run,
+                            channel=ch, recording_id=f"{name}/{machine.speed}/{run}/{ch}",
+                            sampling_rate_hz=FS_HZ, units="g", n_acquisitions=acquisitions,
+                            samples_per_acquisition=n, measurement=measurement_groups(acquisitions),
+                            source="synthetic",
+                            reader=partial(self._generate, name, condition, level, ch),
+                        ))
+        super().__init__("synthetic-pump", recordings, [])
+
+    def _generate(self, machine: str, condition: str, level: int, channel: str) -> np.ndarray:
+        key = (machine, f"{condition} {level}")
+        if self._last is None or self._last[0] != key:
+            self._last = None  # free the previous run before generating the next
+            self._last = (key, generate_run(
+                machine, condition, level, channels=self.channels,
+                acquisitions=self.acquisitions, duration_s=self.duration, seed=self.seed))
+        return self._last[1][channel]
+
+
+def open_synthetic(
+    path: str | os.PathLike[str] | None = None,
+    *,
+    seed: int = DEFAULTS["seed"],
+    acquisitions: int = DEFAULTS["acquisitions"],
+    duration: float = DEFAULTS["duration"],
+    machines: str | Iterable[str] | None = None,
+    channels: str | Iterable[str] | None = None,
+    conditions: str | Iterable[str] | None = None,
+) -> SyntheticPump:
+    """The synthetic pump dataset (``path`` is ignored: nothing is read from disk).
+
+    Parameters
+    ----------
+    seed
+        Base seed; the same seed gives bit-identical signals.
+    acquisitions
+        Continuous acquisitions per run and channel (default 1).
+    duration
+        Length of each acquisition, s (default 12, as in NLN-EMP).
+    machines, channels, conditions
+        Subsets (default both machines, ch1-ch5, every class).
+    """
+    if int(acquisitions) < 1:
+        raise SDTError(f"synthetic-pump: acquisitions must be >= 1, got {acquisitions}")
+    if not float(duration) > 0.2:
+        raise SDTError(f"synthetic-pump: duration must be > 0.2 s, got {duration}")
+    chosen_machines = _select(machines, m.MACHINES, "machine")
+    known_conditions = {c for name in chosen_machines for c, _ in m.MACHINES[name].conditions}
+    chosen_conditions = None if conditions is None else _select(
+        conditions, sorted(known_conditions), "condition")
+    return SyntheticPump(
+        seed=int(seed), acquisitions=int(acquisitions), duration=float(duration),
+        machines=chosen_machines, channels=_select(channels, m.CHANNELS, "channel"),
+        conditions=chosen_conditions,
+    )
