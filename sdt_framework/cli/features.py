@@ -6,6 +6,7 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
+from rich.markup import escape
 
 from ..errors import SDTError
 from .common import console, print_json, registry, table
@@ -42,7 +43,8 @@ def list_features(
     rows = [
         [
             s.name,
-            ", ".join(f"{n} [{u}]" for n, u in zip(s.feature_names, s.units, strict=True)),
+            # escaped: rich would read "[g]" as a markup tag and drop it
+            escape(", ".join(f"{n} [{u}]" for n, u in zip(s.feature_names, s.units, strict=True))),
             s.bytes_per_window,
             3 * s.bytes_per_window,
             s.distribution,
@@ -107,6 +109,7 @@ def extract_features(
         f"wrote {result.values.shape[0]} windows x {len(result.names)} features "
         f"({spec.name}, {result.window_length} samples/window, {n_acq} acquisition(s), "
         f"{spec.bytes_per_window} B/window/axis) to {out}",
+        markup=False,
         highlight=False,
         soft_wrap=True,
     )
