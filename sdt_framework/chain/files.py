@@ -60,9 +60,7 @@ def save_array(path: str | os.PathLike[str], x: NDArray[np.float64]) -> Path:
     return path
 
 
-def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> (
-    NDArray[np.float64]
-):
+def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> NDArray[np.float64]:
     """Convert a recording from ``unit`` (g, mg, or raw LSB times ``scale`` g/LSB) to g."""
     if unit == "g":
         return x

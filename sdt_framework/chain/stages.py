@@ -1,7 +1,9 @@
 """The stages of the measurement chain, each a small object usable on its own.
 
 A stage maps a float64 batch ``(acquisitions, samples)`` at ``fs_in`` to a
-batch at ``fs_out`` along the last axis; it never loops over samples. Adding a
+batch at ``fs_out`` along the last axis; it never loops over samples, treats
+rows independently and returns a new array (never modifies its input), so the
+chain may run it on any block of rows, in any thread. Adding a
 stage to the chain means writing one more class with ``name``, ``fs_in``,
 ``fs_out`` and ``apply(x, ctx)`` (the :class:`Stage` protocol) and inserting it
 in the tuple :func:`sdt_framework.chain.build_stages` returns.
@@ -10,7 +12,6 @@ in the tuple :func:`sdt_framework.chain.build_stages` returns.
 from __future__ import annotations
 
 import os
-from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from fractions import Fraction
 from functools import lru_cache
@@ -41,7 +42,8 @@ class RunContext:
     """What a stage may need beyond the samples: seeds and switches of one call.
 
     ``acquisition_ids[i]`` names row ``i`` of the batch for seeding, so a row
-    gets the same noise whether it is degraded in a batch or alone.
+    gets the same noise whether it is degraded in a batch or alone. ``threads``
+    is how many blocks of rows the chain runs at once.
     """
 
     seed: int = 0
@@ -67,21 +69,6 @@ class Stage(Protocol):
         ...
 
 
-def _sosfilt_rows(sos: NDArray[np.float64], x: Batch, threads: int) -> Batch:
-    """``sosfilt`` along the last axis, rows split across threads (sosfilt drops the GIL).
-
-    Each row is filtered by the same C loop as alone, so the result is
-    bit-identical to filtering the rows one by one.
-    """
-    n_jobs = min(threads, x.shape[0])
-    if n_jobs < 2:
-        return sosfilt(sos, x, axis=-1)
-    chunks = np.array_split(x, n_jobs, axis=0)
-    with ThreadPoolExecutor(n_jobs) as pool:
-        parts = list(pool.map(lambda c: sosfilt(sos, c, axis=-1), chunks))
-    return np.concatenate(parts, axis=0)
-
-
 @dataclass(frozen=True)
 class LowPass:
     """A causal IIR low-pass in SOS form, zero initial conditions (stages 1, 2 and 5)."""
@@ -98,7 +85,7 @@ class LowPass:
     def apply(self, x: Batch, ctx: RunContext) -> Batch:
         """Filter every row along the last axis."""
         # sosfilt wants a writable buffer; the cached design stays read-only
-        return _sosfilt_rows(np.array(self.sos), x, ctx.threads)
+        return sosfilt(np.array(self.sos), x, axis=-1)
 
 
 def sample_count(n: int, fs_in: float, fs_out: float) -> int:
@@ -109,23 +96,27 @@ def sample_count(n: int, fs_in: float, fs_out: float) -> int:
 @lru_cache(maxsize=64)
 def sample_grid(
     n: int, fs_in: float, fs_out: float
-) -> tuple[NDArray[np.intp], NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
+) -> tuple[
+    NDArray[np.intp], NDArray[np.intp], NDArray[np.float64], NDArray[np.float64], NDArray[np.intp]
+]:
     """Index arithmetic of the ADC sampling, once per (N, F_ref, F_target).
 
-    Returns ``(j, delta, dx, at_end)`` such that sample m is
-    ``(x[j+1] - x[j]) / dx * delta + x[j]`` (``x[N-1]`` where ``at_end``): the
-    same operations, in the same order, as ``numpy.interp(m / F_target,
-    n / F_ref, x)``, so the result is bit-identical to it.
+    Returns ``(j, j1, delta, dx, end)`` such that sample m is
+    ``(x[j1] - x[j]) / dx * delta + x[j]``, except at the positions ``end``
+    (t_m at or past the last input time) where it is ``x[N-1]``: the same
+    operations, in the same order, as ``numpy.interp(m / F_target, n / F_ref,
+    x)``, so the result is bit-identical to it.
     """
     t_ref = np.arange(n) / fs_in
     t_out = np.arange(sample_count(n, fs_in, fs_out)) / fs_out
     j = np.clip(np.searchsorted(t_ref, t_out, side="right") - 1, 0, n - 2)
+    j1 = j + 1
     delta = t_out - t_ref[j]
-    dx = t_ref[j + 1] - t_ref[j]
-    at_end = t_out >= t_ref[-1]
-    for arr in (j, delta, dx, at_end):
+    dx = t_ref[j1] - t_ref[j]
+    end = np.flatnonzero(t_out >= t_ref[-1])
+    for arr in (j, j1, delta, dx, end):
         arr.setflags(write=False)
-    return j, delta, dx, at_end
+    return j, j1, delta, dx, end
 
 
 @dataclass(frozen=True)
@@ -143,10 +134,14 @@ class Sample:
 
     def apply(self, x: Batch, ctx: RunContext) -> Batch:
         """Interpolate every row at t_m = m / F_target."""
-        j, delta, dx, at_end = sample_grid(x.shape[-1], self.fs_in, self.target_hz)
-        y0 = x[:, j]
-        out = (x[:, j + 1] - y0) / dx * delta + y0
-        out[:, at_end] = x[:, -1:]
+        j, j1, delta, dx, end = sample_grid(x.shape[-1], self.fs_in, self.target_hz)
+        y0 = np.take(x, j, axis=-1)
+        out = np.take(x, j1, axis=-1)
+        out -= y0  # in place, same operations as (x[j1] - x[j]) / dx * delta + x[j]
+        out /= dx
+        out *= delta
+        out += y0
+        out[:, end] = x[:, -1:]
         return out
 
 
