@@ -136,7 +136,10 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
     if info.status != "loaded":
         raise ConformanceError(f"plugin {info.name!r} failed to register: {info.error}")
     specs: list[Spec] = [
-        *fresh.sensors(), *fresh.feature_sets(), *fresh.classifiers(), *fresh.datasets()
+        *fresh.sensors(),
+        *fresh.feature_sets(),
+        *fresh.classifiers(),
+        *fresh.datasets(),
     ]
     if not specs:
         raise ConformanceError(f"plugin {info.name!r} registers nothing")

@@ -108,7 +108,7 @@ def discover(environ: Mapping[str, str] | None = None) -> list[LoadedPlugin | Pl
             continue
         try:
             obj = ep.load()
-        except Exception as exc:  # noqa: BLE001 - any import failure must not crash the others
+        except Exception as exc:
             info.status = "error"
             info.error = f"import of {ep.value} failed: {type(exc).__name__}: {exc}"
             results.append(info)

@@ -101,21 +101,27 @@ class Registry:
             try:
                 spec = kind.model_validate(dict(spec))
             except ValidationError as exc:
-                raise PluginLoadError(info.name, info.distribution, f"invalid {kind.kind}: {exc}") from None
+                raise PluginLoadError(
+                    info.name, info.distribution, f"invalid {kind.kind}: {exc}"
+                ) from None
         if not isinstance(spec, kind):
             raise PluginLoadError(
                 info.name,
                 info.distribution,
                 f"registered {type(spec).__name__}, expected {kind.__name__}",
             )
-        staged.append(spec.model_copy(update={"plugin": info.name, "distribution": info.distribution}))
+        staged.append(
+            spec.model_copy(update={"plugin": info.name, "distribution": info.distribution})
+        )
 
     def _commit(self, staged: list[Spec], info: PluginInfo) -> None:
         for spec in staged:
             table = self._items[type(spec)]
             existing = table.get(spec.name)
             if existing is not None:
-                error = DuplicateNameError(spec.kind, spec.name, _describe(existing), _describe(spec))
+                error = DuplicateNameError(
+                    spec.kind, spec.name, _describe(existing), _describe(spec)
+                )
                 self._conflicts[(type(spec), spec.name)] = error
                 info.status = "conflict"
                 info.error = str(error)
@@ -144,7 +150,7 @@ class Registry:
                 except PluginLoadError as exc:
                     self._fail(loaded, exc.reason)
                     return info
-                except Exception as exc:  # noqa: BLE001 - a broken plugin must not break the rest
+                except Exception as exc:
                     self._fail(loaded, f"{hook_name} raised {type(exc).__name__}: {exc}")
                     return info
         self._commit(staged, info)

@@ -34,7 +34,7 @@ def load_sensor_file(path: str | os.PathLike[str]) -> list[SensorSpec]:
     except tomllib.TOMLDecodeError as exc:
         raise SpecFileError(path, "", f"not valid TOML: {exc}") from None
 
-    tables = data["sensor"] if "sensor" in data else [data]
+    tables = data.get("sensor", [data])
     if isinstance(tables, dict):
         tables = [tables]
     specs = []
@@ -52,7 +52,9 @@ def load_sensor_file(path: str | os.PathLike[str]) -> list[SensorSpec]:
     return specs
 
 
-def sensor_files_from_env(environ: os._Environ[str] | dict[str, str] | None = None) -> Iterator[Path]:
+def sensor_files_from_env(
+    environ: os._Environ[str] | dict[str, str] | None = None,
+) -> Iterator[Path]:
     """The ``*.toml`` files named by ``SDT_SENSOR_PATH`` (files or folders, os.pathsep)."""
     environ = os.environ if environ is None else environ
     for entry in filter(None, environ.get(ENV_SENSOR_PATH, "").split(os.pathsep)):

@@ -134,9 +134,7 @@ class FeatureSetSpec(Spec):
     @model_validator(mode="after")
     def _check_lengths(self) -> FeatureSetSpec:
         if len(self.units) != len(self.feature_names):
-            raise ValueError(
-                f"{len(self.feature_names)} feature_names but {len(self.units)} units"
-            )
+            raise ValueError(f"{len(self.feature_names)} feature_names but {len(self.units)} units")
         if len(set(self.feature_names)) != len(self.feature_names):
             raise ValueError(f"duplicate feature names in {self.feature_names}")
         return self

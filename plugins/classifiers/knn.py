@@ -1,4 +1,4 @@
-"""k-nearest neighbours, distance-weighted: the `knn` classifier with the paper's hyperparameters."""
+"""k-nearest neighbours: the `knn` classifier with the paper's hyperparameters."""
 
 from __future__ import annotations
 

@@ -23,7 +23,10 @@ def list_classifiers(
     specs = registry(ctx).classifiers()
     if as_json:
         print_json(
-            [{**c.content_dict(), "plugin": c.plugin, "distribution": c.distribution} for c in specs]
+            [
+                {**c.content_dict(), "plugin": c.plugin, "distribution": c.distribution}
+                for c in specs
+            ]
         )
         return
     rows = [

@@ -10,6 +10,7 @@ import typer
 from ..errors import SDTError
 from . import classifiers, features, plugins, sensors
 from . import dataset as dataset_cli
+from .benchmark import benchmark
 from .chain import register as register_chain_commands
 from .common import err_console
 
@@ -26,6 +27,7 @@ app.add_typer(features.app, name="features")
 app.add_typer(classifiers.app, name="classifiers")
 app.add_typer(dataset_cli.app, name="dataset")
 register_chain_commands(app)
+app.command("benchmark")(benchmark)
 
 
 @app.callback()

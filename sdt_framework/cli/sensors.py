@@ -44,13 +44,31 @@ def list_sensors(
         )
         noise = f"{s.noise_density_ug_rthz:g}" + ("" if s.inject_noise else " (not injected)")
         rows.append(
-            [s.name, f"{s.sampling_rate_hz:g}", f"{s.full_scale_g:g}", s.adc_bits, noise,
-             f"{s.mech_cutoff_hz:g}", f"{s.analog_cutoff_hz:g}", digital, s.distribution]
+            [
+                s.name,
+                f"{s.sampling_rate_hz:g}",
+                f"{s.full_scale_g:g}",
+                s.adc_bits,
+                noise,
+                f"{s.mech_cutoff_hz:g}",
+                f"{s.analog_cutoff_hz:g}",
+                digital,
+                s.distribution,
+            ]
         )
     table(
         "Sensor profiles",
-        ["name", "F_target Hz", "G_max g", "bits", "NSD ug/rtHz", "f_mech Hz", "f_ana Hz",
-         "digital LPF", "distribution"],
+        [
+            "name",
+            "F_target Hz",
+            "G_max g",
+            "bits",
+            "NSD ug/rtHz",
+            "f_mech Hz",
+            "f_ana Hz",
+            "digital LPF",
+            "distribution",
+        ],
         rows,
     )
 

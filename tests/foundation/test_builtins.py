@@ -32,8 +32,11 @@ def test_every_builtin_plugin_module_is_an_entry_point():
 
 
 def test_installed_entry_points_match_pyproject():
-    installed = {ep.name: ep.value for ep in md.entry_points(group="sdt_framework")
-                 if ep.dist and ep.dist.name == "sdt-framework"}
+    installed = {
+        ep.name: ep.value
+        for ep in md.entry_points(group="sdt_framework")
+        if ep.dist and ep.dist.name == "sdt-framework"
+    }
     assert installed == DECLARED, "reinstall with `pip install -e .` after editing pyproject"
 
 
@@ -51,8 +54,12 @@ def test_conformance_catches_a_misbehaving_feature_set():
     from sdt_framework import FeatureSetSpec, hookimpl
 
     module = types.ModuleType("bad_features")
-    spec = FeatureSetSpec(name="bad", feature_names=("a", "b"), units=("g", "g"),
-                          compute=lambda w, fs: np.zeros((len(w), 3)))
+    spec = FeatureSetSpec(
+        name="bad",
+        feature_names=("a", "b"),
+        units=("g", "g"),
+        compute=lambda w, fs: np.zeros((len(w), 3)),
+    )
     module.register_features = hookimpl(lambda register: register(spec))
     with pytest.raises(ConformanceError, match=r"feature set 'bad'.*shape \(4, 3\)"):
         check_plugin(module)

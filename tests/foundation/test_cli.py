@@ -17,8 +17,13 @@ runner = CliRunner()
 
 def sdt(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
     """Run the real `sdt` entry point in a subprocess (as a user would)."""
-    return subprocess.run([sys.executable, "-m", "sdt_framework", *args],
-                          capture_output=True, text=True, env=env, check=False)
+    return subprocess.run(
+        [sys.executable, "-m", "sdt_framework", *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        check=False,
+    )
 
 
 def json_of(*args: str) -> list | dict:
@@ -50,8 +55,16 @@ def test_classifiers_list_json_has_table3_hyperparameters():
 
 def test_features_list_json_has_paper8_with_32_bytes():
     sets = {s["name"]: s for s in json_of("features", "list")}
-    assert sets["paper8"]["feature_names"] == ["sigma", "S", "K", "CF", "A_RMS", "A_Peak",
-                                               "V_RMS", "D_RMS"]
+    assert sets["paper8"]["feature_names"] == [
+        "sigma",
+        "S",
+        "K",
+        "CF",
+        "A_RMS",
+        "A_Peak",
+        "V_RMS",
+        "D_RMS",
+    ]
     assert sets["paper8"]["bytes_per_window_per_axis"] == 32
     assert sets["paper8"]["bytes_per_window_triaxial"] == 96
 
@@ -94,8 +107,7 @@ def leaf_commands(group, prefix: tuple[str, ...] = ()):
             yield (*prefix, name)
 
 
-@pytest.mark.parametrize("path", sorted(leaf_commands(typer.main.get_command(app))),
-                         ids=" ".join)
+@pytest.mark.parametrize("path", sorted(leaf_commands(typer.main.get_command(app))), ids=" ".join)
 def test_every_command_has_help_with_an_example(path):
     result = runner.invoke(app, [*path, "--help"], env={"COLUMNS": "200"})
     assert result.exit_code == 0

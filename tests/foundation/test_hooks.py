@@ -30,22 +30,35 @@ def plugin_with(hook_name: str, spec: object) -> types.ModuleType:
 
 
 def test_hook_register_sensors():
-    spec = SensorSpec(name="tiny", sampling_rate_hz=100, full_scale_g=2, adc_bits=8,
-                      noise_density_ug_rthz=1, mech_cutoff_hz=40, analog_cutoff_hz=30)
+    spec = SensorSpec(
+        name="tiny",
+        sampling_rate_hz=100,
+        full_scale_g=2,
+        adc_bits=8,
+        noise_density_ug_rthz=1,
+        mech_cutoff_hz=40,
+        analog_cutoff_hz=30,
+    )
     registry = build_registry(entry_points=False, plugins=[plugin_with("register_sensors", spec)])
     assert registry.sensor("tiny").plugin == "p_register_sensors"
 
 
 def test_hook_register_features():
-    spec = FeatureSetSpec(name="peak", feature_names=("peak",), units=("g",),
-                          compute=lambda w, fs: np.abs(w).max(axis=1, keepdims=True))
+    spec = FeatureSetSpec(
+        name="peak",
+        feature_names=("peak",),
+        units=("g",),
+        compute=lambda w, fs: np.abs(w).max(axis=1, keepdims=True),
+    )
     registry = build_registry(entry_points=False, plugins=[plugin_with("register_features", spec)])
     assert registry.feature_set("peak").bytes_per_window == 4
 
 
 def test_hook_register_classifiers():
     spec = ClassifierSpec(name="dummy", estimator="sklearn.dummy:DummyClassifier", seed_param=None)
-    registry = build_registry(entry_points=False, plugins=[plugin_with("register_classifiers", spec)])
+    registry = build_registry(
+        entry_points=False, plugins=[plugin_with("register_classifiers", spec)]
+    )
     assert type(registry.classifier("dummy").build(seed=3)).__name__ == "DummyClassifier"
 
 
@@ -56,14 +69,21 @@ def test_hook_register_datasets():
 
 
 def hook_names() -> list[str]:
-    return [name for name, obj in vars(hookspecs).items()
-            if inspect.isfunction(obj) and name.startswith("register_")]
+    return [
+        name
+        for name, obj in vars(hookspecs).items()
+        if inspect.isfunction(obj) and name.startswith("register_")
+    ]
 
 
 def test_every_hook_is_documented_and_tested():
     names = hook_names()
-    assert {"register_sensors", "register_features", "register_classifiers",
-            "register_datasets"} <= set(names)
+    assert {
+        "register_sensors",
+        "register_features",
+        "register_classifiers",
+        "register_datasets",
+    } <= set(names)
     source = Path(__file__).read_text()
     for name in names:
         assert inspect.getdoc(getattr(hookspecs, name)), f"hook {name} has no docstring"

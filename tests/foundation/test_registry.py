@@ -40,8 +40,16 @@ def test_builtins_have_the_paper_table1_values():
     registry = build_registry()
     for name, values in TABLE1.items():
         s = registry.sensor(name)
-        got = (s.sampling_rate_hz, s.full_scale_g, s.adc_bits, s.noise_density_ug_rthz,
-               s.mech_cutoff_hz, s.analog_cutoff_hz, s.digital_cutoff_hz, s.digital_order)
+        got = (
+            s.sampling_rate_hz,
+            s.full_scale_g,
+            s.adc_bits,
+            s.noise_density_ug_rthz,
+            s.mech_cutoff_hz,
+            s.analog_cutoff_hz,
+            s.digital_cutoff_hz,
+            s.digital_order,
+        )
         assert got == values
         assert s.mech_order == 2 and s.analog_order == 1
         assert s.distribution == "sdt-framework" and s.source
@@ -69,8 +77,15 @@ def test_in_process_plugin_is_stamped_with_provenance():
 def test_add_accepts_a_dict_and_validates_it():
     registry = build_registry(entry_points=False)
     registry.add(
-        {"name": "d", "sampling_rate_hz": 100, "full_scale_g": 2, "adc_bits": 8,
-         "noise_density_ug_rthz": 1, "mech_cutoff_hz": 40, "analog_cutoff_hz": 30},
+        {
+            "name": "d",
+            "sampling_rate_hz": 100,
+            "full_scale_g": 2,
+            "adc_bits": 8,
+            "noise_density_ug_rthz": 1,
+            "mech_cutoff_hz": 40,
+            "analog_cutoff_hz": 30,
+        },
         SensorSpec,
     )
     assert registry.sensor("d").adc_bits == 8
@@ -92,7 +107,9 @@ def test_duplicate_names_from_two_distributions_name_both(fake_dist):
 
 
 def test_plugin_failing_to_import_is_reported_and_others_keep_working(fake_dist):
-    fake_dist("sdt-broken", {"broken": "broken_mod"}, {"broken_mod": "raise RuntimeError('boom')\n"})
+    fake_dist(
+        "sdt-broken", {"broken": "broken_mod"}, {"broken_mod": "raise RuntimeError('boom')\n"}
+    )
     registry = build_registry()
     [info] = [p for p in registry.plugins() if p.name == "broken"]
     assert info.status == "error" and info.distribution == "sdt-broken"
@@ -102,7 +119,10 @@ def test_plugin_failing_to_import_is_reported_and_others_keep_working(fake_dist)
 
 
 def test_hook_that_raises_marks_only_that_plugin(fake_dist):
-    source = "from sdt_framework import hookimpl\n@hookimpl\ndef register_sensors(register):\n    raise ValueError('bad table')\n"
+    source = (
+        "from sdt_framework import hookimpl\n@hookimpl\n"
+        "def register_sensors(register):\n    raise ValueError('bad table')\n"
+    )
     fake_dist("sdt-raiser", {"raiser": "raiser_mod"}, {"raiser_mod": source})
     registry = build_registry()
     [info] = [p for p in registry.plugins() if p.name == "raiser"]
@@ -111,8 +131,10 @@ def test_hook_that_raises_marks_only_that_plugin(fake_dist):
 
 
 def test_invalid_spec_from_a_plugin_names_the_plugin(fake_dist):
-    source = ("from sdt_framework import hookimpl\n@hookimpl\ndef register_sensors(register):\n"
-              "    register({'name': 'x', 'sampling_rate_hz': -1})\n")
+    source = (
+        "from sdt_framework import hookimpl\n@hookimpl\ndef register_sensors(register):\n"
+        "    register({'name': 'x', 'sampling_rate_hz': -1})\n"
+    )
     fake_dist("sdt-invalid", {"invalid": "invalid_mod"}, {"invalid_mod": source})
     [info] = [p for p in build_registry().plugins() if p.name == "invalid"]
     assert info.status == "error" and "invalid sensor" in info.error
@@ -145,7 +167,11 @@ def test_misspelled_hook_is_rejected():
 
 
 def test_only_and_block_switches(fake_dist):
-    fake_dist("sdt-extra", {"extra-sensor": "extra_mod"}, {"extra_mod": SENSOR_PLUGIN.format(name="extra")})
+    fake_dist(
+        "sdt-extra",
+        {"extra-sensor": "extra_mod"},
+        {"extra_mod": SENSOR_PLUGIN.format(name="extra")},
+    )
     blocked = build_registry(environ={"SDT_BLOCK_PLUGINS": "sdt-extra"})
     assert "extra" not in [s.name for s in blocked.sensors()]
     assert {p.name: p.status for p in blocked.plugins()}["extra-sensor"] == "blocked"
@@ -159,8 +185,9 @@ def test_trace_switch_prints_registrations(capsys):
     assert "adxl345 registered sensor 'adxl345'" in capsys.readouterr().err
 
 
-@pytest.mark.parametrize("hook", ["register_sensors", "register_features",
-                                  "register_classifiers", "register_datasets"])
+@pytest.mark.parametrize(
+    "hook", ["register_sensors", "register_features", "register_classifiers", "register_datasets"]
+)
 def test_hook_kinds_reject_the_wrong_spec_type(hook):
     module = types.ModuleType(f"wrong_{hook}")
 

@@ -60,8 +60,11 @@ def test_several_sensors_in_one_file(tmp_path):
         (GOOD.replace("adc_bits = 12", 'adc_bits = "twelve"'), "adc_bits", "valid integer"),
         (GOOD + "sample_rate = 3\n", "sample_rate", "unknown field"),
         (GOOD.replace("mech_cutoff_hz = 3000\n", ""), "mech_cutoff_hz", "Field required"),
-        (GOOD.replace("digital_cutoff_hz = 200", "digital_cutoff_hz = 600"), "",
-         "at or above the Nyquist frequency 500 Hz"),
+        (
+            GOOD.replace("digital_cutoff_hz = 200", "digital_cutoff_hz = 600"),
+            "",
+            "at or above the Nyquist frequency 500 Hz",
+        ),
     ],
 )
 def test_bad_field_reports_file_field_and_reason(tmp_path, text, field, reason):
@@ -91,7 +94,8 @@ def test_invalid_toml_and_missing_file(tmp_path):
 
 def test_cli_sensor_file_option_and_error(tmp_path):
     runner = CliRunner()
-    ok = runner.invoke(app, ["--sensor-file", str(write(tmp_path, GOOD)), "sensors", "show",
-                             "my-sensor", "--json"])
+    ok = runner.invoke(
+        app, ["--sensor-file", str(write(tmp_path, GOOD)), "sensors", "show", "my-sensor", "--json"]
+    )
     assert ok.exit_code == 0, ok.output
     assert '"adc_bits": 12' in ok.output

@@ -1,0 +1,129 @@
+"""The benchmark configuration: one validated model, from TOML and the command line.
+
+Every name is resolved through the registry before any work starts, so an
+unknown sensor, a negative repetition count or a sensor faster than the data
+is one clear message, not a failure half an hour into a sweep. The resolved
+configuration is written beside the results as ``config.toml`` and re-runs the
+same benchmark with ``sdt benchmark config.toml``.
+"""
+
+from __future__ import annotations
+
+import os
+import tomllib
+from pathlib import Path
+from typing import Any, Literal
+
+import tomli_w
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+
+from ..errors import SDTError, SpecFileError
+from ..io import atomic_write_text
+
+__all__ = ["SCENARIOS", "BenchmarkConfig", "load_config", "write_config"]
+
+SCENARIOS = ("forward", "backward", "interpolation")
+
+#: what --quick changes: fewer repetitions, shorter synthetic acquisitions
+QUICK = {"repeats": 2, "dataset_options": {"duration": 4.0}}
+
+
+class BenchmarkConfig(BaseModel):
+    """Everything that defines a benchmark run (SPEC sections 5-7)."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    dataset: str | None = Field(
+        default=None,
+        description="Registered dataset name; default: picked from `data`, "
+        "or synthetic-pump when no data is given.",
+    )
+    data: str | None = Field(default=None, description="NLN-EMP root folder or manifest file.")
+    dataset_options: dict[str, Any] = Field(
+        default_factory=dict, description="Options passed to the dataset loader."
+    )
+    machines: list[str] | None = Field(default=None, description="Machines to use (all).")
+    channels: list[str] | None = Field(default=None, description="Channels to use (all).")
+    sensors: list[str] | None = Field(default=None, description="Sensor names (all registered).")
+    reference: str = Field(default="wilcoxon-786b10", description="Reference sensor for deltas.")
+    classifiers: list[str] | None = Field(default=None, description="Classifiers (all).")
+    features: str = Field(default="paper8", description="Feature set, e.g. 'paper8+env_bpfo'.")
+    window_s: float = Field(default=0.64, gt=0, description="Window length, s.")
+    settle_s: float = Field(default=0.1, ge=0, description="Settling discarded per acquisition, s.")
+    scenarios: list[Literal["forward", "backward", "interpolation"]] = Field(
+        default_factory=lambda: list(SCENARIOS), description="Generalisation scenarios."
+    )
+    allocation: str | None = Field(
+        default=None, description="CSV/TOML allocation table replacing the scenario rule."
+    )
+    repeats: int = Field(default=10, ge=1, description="Repetitions N (noise and seeds).")
+    seed: int = Field(default=0, ge=0, description="Base seed.")
+    jobs: int = Field(default=-1, description="Parallel processes (-1: all cores).")
+    backend: Literal["local", "dask"] = Field(default="local", description="Execution engine.")
+    scheduler: str | None = Field(default=None, description="Dask scheduler address.")
+    cache_dir: str | None = Field(default=None, description="Feature cache folder.")
+    report: bool = Field(default=True, description="Write the report at the end.")
+
+    @field_validator("sensors", "classifiers", "machines", "channels", "scenarios")
+    @classmethod
+    def _not_empty(cls, value: list[str] | None) -> list[str] | None:
+        if value is not None and not value:
+            raise ValueError("must name at least one entry (or be left out for all)")
+        if value is not None and len(set(value)) != len(value):
+            raise ValueError(f"lists a name twice: {value}")
+        return value
+
+    @field_validator("jobs")
+    @classmethod
+    def _jobs(cls, value: int) -> int:
+        if value == 0 or value < -1:
+            raise ValueError("must be a positive number of processes, or -1 for all cores")
+        return value
+
+    def n_jobs(self) -> int:
+        """Processes to use."""
+        return os.cpu_count() or 1 if self.jobs == -1 else self.jobs
+
+
+def _error(exc: ValidationError, where: str) -> SDTError:
+    first = exc.errors()[0]
+    field = ".".join(str(p) for p in first["loc"])
+    reason = "unknown option" if first["type"] == "extra_forbidden" else first["msg"]
+    return SpecFileError(where, field, f"{reason} (got {first.get('input')!r})")
+
+
+def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) -> BenchmarkConfig:
+    """Read a TOML config (optional) and apply command-line overrides on top.
+
+    ``overrides`` holds only the options the user actually gave; ``quick``
+    (if true) applies the :data:`QUICK` preset under them.
+    """
+    data: dict[str, Any] = {}
+    where = "command line"
+    if path is not None:
+        where = str(path)
+        try:
+            data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            raise SDTError(f"{path}: config file not found") from None
+        except tomllib.TOMLDecodeError as exc:
+            raise SDTError(f"{path}: not valid TOML: {exc}") from None
+        data = data.get("benchmark", data)
+    if overrides.pop("quick", False):
+        options = {**data.get("dataset_options", {}), **QUICK["dataset_options"]}
+        data = {**data, "repeats": QUICK["repeats"], "dataset_options": options}
+    data.update(overrides)
+    try:
+        return BenchmarkConfig.model_validate(data)
+    except ValidationError as exc:
+        raise _error(exc, where) from None
+
+
+def write_config(config: BenchmarkConfig, path: str | os.PathLike[str]) -> None:
+    """Write the fully resolved config as TOML (re-runnable with `sdt benchmark PATH`)."""
+    data = {k: v for k, v in config.model_dump(mode="json").items() if v is not None}
+    atomic_write_text(
+        path,
+        "# Resolved by sdt benchmark; re-run with: sdt benchmark config.toml\n"
+        + tomli_w.dumps({"benchmark": data}),
+    )

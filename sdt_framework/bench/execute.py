@@ -1,0 +1,84 @@
+"""Where tasks run: local processes (joblib/loky) or a Dask distributed cluster.
+
+Both engines expose the same ``map_unordered(fn, items)`` so the orchestrator
+has one code path; results stream back as they finish, which drives the
+progress bar. Local workers are limited to one BLAS/OpenMP thread each so
+``--jobs`` processes do not oversubscribe the cores.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable, Iterable, Iterator
+from typing import Any, Protocol
+
+from joblib import Parallel, delayed, parallel_config
+
+from ..errors import SDTError
+
+__all__ = ["DaskExecutor", "Executor", "LocalExecutor", "open_executor"]
+
+
+class Executor(Protocol):
+    """Runs ``fn`` over ``items``, yielding results in completion order."""
+
+    def map_unordered(self, fn: Callable[[Any], Any], items: Iterable[Any]) -> Iterator[Any]:
+        """Apply ``fn`` to each item; yield each result as soon as it is ready."""
+        ...
+
+
+class LocalExecutor:
+    """joblib processes on this machine (``jobs == 1`` runs in-process)."""
+
+    def __init__(self, jobs: int) -> None:
+        self.jobs = jobs
+
+    def map_unordered(self, fn: Callable[[Any], Any], items: Iterable[Any]) -> Iterator[Any]:
+        items = list(items)
+        if self.jobs == 1 or len(items) <= 1:
+            yield from map(fn, items)
+            return
+        with parallel_config(backend="loky", inner_max_num_threads=1):
+            yield from Parallel(n_jobs=self.jobs, return_as="generator_unordered")(
+                delayed(fn)(item) for item in items
+            )
+
+
+class DaskExecutor:
+    """Tasks submitted to a ``distributed`` scheduler (a real cluster or a LocalCluster)."""
+
+    def __init__(self, client: Any) -> None:
+        self.client = client
+
+    def map_unordered(self, fn: Callable[[Any], Any], items: Iterable[Any]) -> Iterator[Any]:
+        from distributed import as_completed
+
+        futures = self.client.map(fn, list(items), pure=False)
+        for future in as_completed(futures):
+            yield future.result()
+
+
+@contextlib.contextmanager
+def open_executor(backend: str, jobs: int, scheduler: str | None) -> Iterator[Executor]:
+    """The executor for ``backend``; for Dask, connect to ``scheduler`` or start a local one."""
+    if backend == "local":
+        yield LocalExecutor(jobs)
+        return
+    from distributed import Client, LocalCluster
+
+    if scheduler:
+        try:
+            client = Client(scheduler, timeout="10s")
+        except OSError as exc:
+            raise SDTError(
+                f"cannot reach the Dask scheduler at {scheduler!r} ({exc}); start one with "
+                f"`dask scheduler` or leave --scheduler out for a local cluster"
+            ) from None
+        with client:
+            yield DaskExecutor(client)
+        return
+    with (
+        LocalCluster(n_workers=jobs, threads_per_worker=1, dashboard_address=None) as cluster,
+        Client(cluster) as client,
+    ):
+        yield DaskExecutor(client)

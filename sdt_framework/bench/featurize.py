@@ -1,0 +1,148 @@
+"""Stage 1 of a benchmark: recording -> SDT chain -> windows -> features, cached.
+
+One task per recording: its samples are read once, then degraded by every
+sensor for every repetition and featurised. Repetition ``r`` draws the SDT
+noise from ``derive_seed(seed, "noise", r, recording_id)``, so results do not
+depend on the order or the process a task runs in. A profile that injects no
+noise (the reference) is deterministic: it is computed once and shared by all
+repetitions.
+
+Feature blocks are cached on disk keyed by the dataset, the recording, the
+sensor's and the feature set's content hashes, the windowing and the noise
+seed, so adding a classifier to a finished benchmark recomputes no features.
+A failure is never cached.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..chain import degrade
+from ..data.recording import Recording
+from ..features import extract
+from ..io import atomic_path
+from ..seeding import derive_seed
+from ..specs import FeatureSetSpec, SensorSpec
+
+__all__ = ["FeatureBlock", "FeatureJob", "featurize_recording", "noise_seed"]
+
+CACHE_VERSION = "1"
+
+
+@dataclass(frozen=True)
+class FeatureBlock:
+    """Features of one recording as seen by one sensor in one repetition."""
+
+    recording_id: str
+    sensor: str
+    repeat: int
+    values: np.ndarray  # float32 (n_windows, n_features)
+    acquisition: np.ndarray
+    window: np.ndarray
+    source: str  # computed | cached (read from disk) | shared (deterministic chain)
+
+
+@dataclass(frozen=True)
+class FeatureJob:
+    """Everything a worker needs to featurise one recording (picklable)."""
+
+    recording: Recording
+    dataset_key: str
+    sensors: tuple[SensorSpec, ...]
+    feature_set: FeatureSetSpec
+    repeats: int
+    seed: int
+    window_s: float
+    settle_s: float
+    cache_dir: str | None
+
+
+def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) -> int | None:
+    """The chain seed of one repetition, or None for a chain without randomness."""
+    if not sensor.inject_noise or sensor.noise_density_ug_rthz == 0:
+        return None
+    return derive_seed(seed, "noise", repeat, recording_id)
+
+
+def _key(job: FeatureJob, sensor: SensorSpec, chain_seed: int | None) -> str:
+    parts = {
+        "version": CACHE_VERSION,
+        "dataset": job.dataset_key,
+        "recording": job.recording.metadata(),
+        "sensor": sensor.content_hash(),
+        "features": job.feature_set.content_hash(),
+        "window_s": job.window_s,
+        "settle_s": job.settle_s,
+        "seed": chain_seed,
+    }
+    return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()
+
+
+def _cache_path(job: FeatureJob, key: str) -> Path | None:
+    if job.cache_dir is None:
+        return None
+    return Path(job.cache_dir) / "features" / key[:2] / f"{key}.npz"
+
+
+def _compute(job: FeatureJob, data: np.ndarray, sensor: SensorSpec, chain_seed: int | None):
+    rec = job.recording
+    label = f"{rec.source} ({rec.recording_id})"
+    degraded, fs_out = degrade(
+        data,
+        rec.sampling_rate_hz,
+        sensor,
+        seed=chain_seed or 0,
+        noise=chain_seed is not None,
+        label=label,
+        threads=1,
+    )
+    table = extract(degraded, fs_out, job.feature_set, window_s=job.window_s, settle_s=job.settle_s)
+    return table.values, table.acquisition, table.window
+
+
+def featurize_recording(job: FeatureJob) -> list[FeatureBlock]:
+    """Features of one recording for every (sensor, repetition) of the job."""
+    data: np.ndarray | None = None
+    blocks: list[FeatureBlock] = []
+    for sensor in job.sensors:
+        done: dict[int | None, FeatureBlock] = {}
+        for repeat in range(job.repeats):
+            chain_seed = noise_seed(sensor, job.seed, repeat, job.recording.recording_id)
+            if chain_seed in done:  # deterministic chain: identical for every repetition
+                blocks.append(_with_repeat(done[chain_seed], repeat))
+                continue
+            key = _key(job, sensor, chain_seed)
+            path = _cache_path(job, key)
+            if path is not None and path.exists():
+                with np.load(path) as stored:
+                    arrays = (stored["values"], stored["acquisition"], stored["window"])
+                source = "cached"
+            else:
+                if data is None:
+                    data = job.recording.load()
+                arrays = _compute(job, data, sensor, chain_seed)
+                source = "computed"
+                if path is not None:
+                    with atomic_path(path) as tmp, tmp.open("wb") as handle:
+                        np.savez(handle, values=arrays[0], acquisition=arrays[1], window=arrays[2])
+            block = FeatureBlock(job.recording.recording_id, sensor.name, repeat, *arrays, source)
+            done[chain_seed] = block
+            blocks.append(block)
+    return blocks
+
+
+def _with_repeat(block: FeatureBlock, repeat: int) -> FeatureBlock:
+    return FeatureBlock(
+        block.recording_id,
+        block.sensor,
+        repeat,
+        block.values,
+        block.acquisition,
+        block.window,
+        "shared",
+    )

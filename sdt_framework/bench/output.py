@@ -1,0 +1,110 @@
+"""Everything a benchmark leaves in its output folder, each file written atomically.
+
+results.parquet / results.csv   one row per run (tidy)
+per_class.parquet               precision, recall, F1, support per class per run
+confusion.parquet               confusion-matrix counts per run (long form)
+allocation.csv                  the train/test allocation used
+skipped.csv                     (machine, scenario) pairs that could not be scored, and why
+features.parquet                repetition-0 features of every window, per sensor (for plots)
+config.toml                     the fully resolved, re-runnable configuration
+table4.md                       the paper's Table 4 layout, mean +/- SD Macro F1
+summary.json                    counts, timings, software versions
+"""
+
+from __future__ import annotations
+
+import json
+import platform
+from importlib import metadata
+from pathlib import Path
+
+import pandas as pd
+
+from ..io import atomic_write_text
+from .config import write_config
+from .results import table4_markdown, tidy, write_frame
+from .runner import BenchmarkResult
+
+__all__ = ["OUTPUT_FILES", "software_versions", "write_outputs"]
+
+OUTPUT_FILES = (
+    "results.parquet",
+    "results.csv",
+    "per_class.parquet",
+    "confusion.parquet",
+    "allocation.csv",
+    "skipped.csv",
+    "features.parquet",
+    "config.toml",
+    "table4.md",
+    "summary.json",
+)
+
+_PACKAGES = (
+    "sdt-framework",
+    "numpy",
+    "scipy",
+    "pandas",
+    "pyarrow",
+    "scikit-learn",
+    "xgboost",
+    "pydantic",
+    "pluggy",
+    "joblib",
+    "distributed",
+    "matplotlib",
+)
+
+
+def software_versions() -> dict[str, str]:
+    """Python and key package versions, for provenance."""
+    versions = {"python": platform.python_version(), "platform": platform.platform()}
+    for name in _PACKAGES:
+        try:
+            versions[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            versions[name] = "not installed"
+    return versions
+
+
+def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
+    """Write every output file; return the tidy results table."""
+    out = Path(out_dir)
+    plan = result.plan
+    results, per_class, confusion = tidy(result.runs)
+    write_frame(results, out / "results.parquet")
+    write_frame(results, out / "results.csv")
+    write_frame(per_class, out / "per_class.parquet")
+    write_frame(confusion, out / "confusion.parquet")
+    write_frame(plan.allocation, out / "allocation.csv")
+    skipped = pd.DataFrame(
+        [(m, s, reason) for (m, s), reason in sorted(plan.skipped.items())],
+        columns=["machine", "scenario", "reason"],
+    )
+    write_frame(skipped, out / "skipped.csv")
+    write_frame(result.features[result.features["repeat"] == 0], out / "features.parquet")
+    write_config(plan.config, out / "config.toml")
+    atomic_write_text(
+        out / "table4.md",
+        "# Table 4: Macro F1 by scenario, sensor, machine and "
+        "classifier\n\n" + table4_markdown(results, [s.name for s in plan.sensors]),
+    )
+    summary = {
+        "dataset": plan.dataset.name,
+        "recordings": len(plan.recordings),
+        "runs": len(results),
+        "runs_ok": int((results["status"] == "ok").sum()),
+        "runs_failed": int((results["status"] == "error").sum()),
+        "runs_computed": result.runs_computed,
+        "runs_resumed": result.runs_resumed,
+        "feature_blocks_computed": result.features_computed,
+        "feature_blocks_cached": result.features_cached,
+        "skipped": [
+            {"machine": m, "scenario": s, "reason": r} for (m, s), r in sorted(plan.skipped.items())
+        ],
+        "dataset_skipped": [s.as_dict() for s in plan.dataset.skipped],
+        "seconds": result.seconds,
+        "software": software_versions(),
+    }
+    atomic_write_text(out / "summary.json", json.dumps(summary, indent=2))
+    return results
