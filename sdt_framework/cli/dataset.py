@@ -103,4 +103,4 @@ def inspect(
         for item in info["skipped"]:
             console.print(f"skipped {item['path']}: {item['reason']}", highlight=False,
                           soft_wrap=True)
-    console.print(dataset.summary_line(), highlight=False)
+    console.print(dataset.summary_line(), highlight=False, soft_wrap=True)

@@ -135,7 +135,7 @@ def parse_nln_csv(path: str | os.PathLike[str], expected_step_s: float | None = 
     try:
         table = pacsv.read_csv(
             path,
-            read_options=pacsv.ReadOptions(use_threads=True, block_size=8 << 20),
+            read_options=pacsv.ReadOptions(use_threads=True),
             convert_options=pacsv.ConvertOptions(
                 column_types={name: pa.float64() for name in columns},
                 null_values=[""],
