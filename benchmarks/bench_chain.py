@@ -7,7 +7,9 @@ CPUs, sampling by precomputed index arithmetic) and through the plain loop
 below (per acquisition: ``sosfilt`` per filter, ``numpy.interp``, noise,
 ``sosfilt``, clip/round). Both draw the noise of acquisition i from
 ``seeding.rng(seed, i)``, so their outputs must be bit-identical; this is
-asserted. Prints reference samples per second and the speed-up.
+asserted. Prints reference samples per second and the speed-up, with all
+CPUs and with one thread (the algorithmic part: fused cascade, block-wise
+execution, index-arithmetic sampling).
 
 Run: ``.venv/bin/python benchmarks/bench_chain.py [--repeats 3]``
 """
@@ -88,14 +90,19 @@ def main() -> None:
         f"batch {ACQUISITIONS} x {SAMPLES} at {FS:g} Hz ({total / FS:g} s of signal), "
         f"{len(os.sched_getaffinity(0))} CPUs, best of {args.repeats}"
     )
-    print(f"{'profile':<18}{'chain Msamp/s':>15}{'plain Msamp/s':>15}{'speed-up':>10}")
+    print(
+        f"{'profile':<18}{'chain Msamp/s':>15}{'1 thread':>10}{'plain Msamp/s':>15}"
+        f"{'speed-up':>10}{'1 thread':>10}"
+    )
     for sensor in build_registry().sensors():
         ours_t, ours = best_time(lambda s=sensor: degrade(x, FS, s, SEED)[0], args.repeats)
+        one_t, one = best_time(lambda s=sensor: degrade(x, FS, s, SEED, threads=1)[0], args.repeats)
         plain_t, plain = best_time(lambda s=sensor: plain_degrade(x, FS, s, SEED), args.repeats)
         np.testing.assert_array_equal(ours, plain)
+        np.testing.assert_array_equal(one, plain)
         print(
-            f"{sensor.name:<18}{total / ours_t / 1e6:>15.1f}{total / plain_t / 1e6:>15.1f}"
-            f"{plain_t / ours_t:>9.2f}x"
+            f"{sensor.name:<18}{total / ours_t / 1e6:>15.1f}{total / one_t / 1e6:>10.1f}"
+            f"{total / plain_t / 1e6:>15.1f}{plain_t / ours_t:>9.2f}x{plain_t / one_t:>9.2f}x"
         )
 
 

@@ -44,10 +44,11 @@ def degrade_command(
     )
     save_array(out, y)
     rows = 1 if y.ndim == 1 else y.shape[0]
+    noise_state = "off" if no_noise else ("on" if spec.inject_noise else "off (profile)")
     console.print(
         f"{input_path}: {rows} acquisition(s) x {x.shape[-1]} samples at {fs:g} Hz -> "
         f"{rows} x {y.shape[-1]} at {fs_out:g} Hz with {spec.name} "
-        f"(seed {seed}, noise {'off' if no_noise else 'on'}) -> {out}",
+        f"(seed {seed}, noise {noise_state}) -> {out}",
         highlight=False,
         soft_wrap=True,
     )
