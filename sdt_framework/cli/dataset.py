@@ -8,8 +8,6 @@ from typing import Annotated
 
 import typer
 
-from ..data import open_dataset, write_nln_emp
-from ..data.synth_dataset import DEFAULTS
 from .common import console, err_console, print_json, registry, table
 
 app = typer.Typer(help="List, generate and inspect datasets.", no_args_is_help=True)
@@ -40,11 +38,11 @@ def list_datasets(
 def synth(
     ctx: typer.Context,
     out: Annotated[Path, typer.Option("--out", help="Folder to write Vibration/... into.")],
-    seed: int = typer.Option(DEFAULTS["seed"], "--seed", help="Base seed (same seed, same data)."),
-    acquisitions: int = typer.Option(
-        DEFAULTS["acquisitions"], "--acquisitions", help="12 s columns per file."),
-    duration: float = typer.Option(
-        DEFAULTS["duration"], "--duration", help="Seconds per acquisition."),
+    seed: int | None = typer.Option(None, "--seed", help="Base seed (default 0)."),
+    acquisitions: int | None = typer.Option(
+        None, "--acquisitions", help="Acquisitions (CSV columns) per file (default 1)."),
+    duration: float | None = typer.Option(
+        None, "--duration", help="Seconds per acquisition (default 12)."),
 ) -> None:
     """Write the synthetic pump dataset in the NLN-EMP layout and CSV format.
 
@@ -54,8 +52,11 @@ def synth(
 
       sdt dataset synth --out data/synthetic --seed 1 --acquisitions 5 --duration 12
     """
-    dataset = open_dataset(registry(ctx), "synthetic-pump", seed=seed,
-                           acquisitions=acquisitions, duration=duration)
+    from ..data import open_dataset, write_nln_emp  # heavy (scipy, pyarrow): on use only
+
+    given = {"seed": seed, "acquisitions": acquisitions, "duration": duration}
+    options = {key: value for key, value in given.items() if value is not None}
+    dataset = open_dataset(registry(ctx), "synthetic-pump", **options)
     start = time.perf_counter()
     written = write_nln_emp(dataset, out)
     size = sum(p.stat().st_size for p in written) / 1e6
@@ -82,6 +83,8 @@ def inspect(
 
       sdt dataset inspect synthetic-pump
     """
+    from ..data import open_dataset  # heavy (scipy, pyarrow): on use only
+
     dataset = open_dataset(registry(ctx), path_or_name)
     if validate:
         dataset.validate()
