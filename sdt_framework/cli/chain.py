@@ -7,8 +7,6 @@ from typing import Annotated, Any
 
 import typer
 
-from ..chain import degrade, noise_check, plot_noise_check
-from ..chain.files import load_array, save_array, to_g
 from .common import console, print_json, registry
 
 __all__ = ["degrade_command", "register", "validate_noise_command"]
@@ -37,6 +35,9 @@ def degrade_command(
 
       sdt degrade pump.npy --sensor adxl345 --fs 20000 --seed 0 --out pump_adxl345.npy
     """
+    from ..chain import degrade  # scipy.signal: imported on use so `sdt --help` starts fast
+    from ..chain.files import load_array, save_array
+
     spec = registry(ctx).sensor(sensor)
     x = load_array(input_path)
     y, fs_out = degrade(
@@ -127,6 +128,9 @@ def validate_noise_command(
 
       sdt validate-noise --sensor adxl345 --recording x_axis.csv --unit lsb --scale 0.0039
     """
+    from ..chain import noise_check, plot_noise_check  # imported on use, as in degrade
+    from ..chain.files import load_array, to_g
+
     spec = registry(ctx).sensor(sensor)
     rec = None
     if recording is not None:
