@@ -10,10 +10,6 @@ import typer
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 from rich.table import Table
 
-from ..bench.config import load_config
-from ..bench.output import write_outputs
-from ..bench.results import SCENARIO_TITLES, table4
-from ..bench.runner import plan_benchmark, run_benchmark
 from .common import console, err_console, registry
 
 
@@ -23,6 +19,8 @@ def _names(value: str | None) -> list[str] | None:
 
 def _print_table4(results: Any, sensor_order: list[str]) -> None:
     """Table 4 in the terminal: one table per machine, scenario blocks, mean over ± SD."""
+    from ..bench.results import SCENARIO_TITLES, table4
+
     wide = table4(results)
     if wide.empty:
         console.print("No successful runs: nothing to tabulate.")
@@ -97,6 +95,11 @@ def benchmark(
 
       sdt benchmark --data /data/NLN-EMP --out results/nln --jobs 2
     """
+    # Imported here so that `sdt --help` and the listing commands start fast.
+    from ..bench.config import load_config
+    from ..bench.output import write_outputs
+    from ..bench.runner import plan_benchmark, run_benchmark
+
     given: dict[str, Any] = {
         "data": data,
         "dataset": dataset,
