@@ -40,8 +40,8 @@ def print_json(data: Any) -> None:
 def table(title: str, columns: list[str], rows: list[list[Any]]) -> None:
     """Print a rich table."""
     out = Table(title=title, title_justify="left")
-    for column in columns:
-        out.add_column(column)
+    for index, column in enumerate(columns):
+        out.add_column(column, no_wrap=index == 0)  # names stay whole
     for row in rows:
         out.add_row(*["" if cell is None else str(cell) for cell in row])
     console.print(out)

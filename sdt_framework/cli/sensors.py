@@ -39,10 +39,8 @@ def list_sensors(
         return
     rows = []
     for s in sensors:
-        digital = (
-            f"order {s.digital_order} at {s.digital_cutoff_hz:g}" if s.digital_cutoff_hz else "none"
-        )
-        noise = f"{s.noise_density_ug_rthz:g}" + ("" if s.inject_noise else " (not injected)")
+        digital = f"{s.digital_cutoff_hz:g} ({s.digital_order})" if s.digital_cutoff_hz else "-"
+        noise = f"{s.noise_density_ug_rthz:g}" + ("" if s.inject_noise else " (off)")
         rows.append(
             [
                 s.name,
@@ -57,16 +55,16 @@ def list_sensors(
             ]
         )
     table(
-        "Sensor profiles",
+        "Sensor profiles (paper Table 1)",
         [
             "name",
-            "F_target Hz",
-            "G_max g",
+            "rate Hz",
+            "±g",
             "bits",
-            "NSD ug/rtHz",
+            "NSD µg/√Hz",
             "f_mech Hz",
             "f_ana Hz",
-            "digital LPF",
+            "f_dig Hz (order)",
             "distribution",
         ],
         rows,
