@@ -1,1 +1,19 @@
-"""Reports: the paper's tables and figures from a results folder."""
+"""Reports: the paper's tables and figures from a results folder.
+
+Public API
+----------
+write_report(results_dir, formats=("md", "html"), *, registry=None) -> dict[str, Path]
+    report.md (figures linked from ``figures/``) and a self-contained report.html.
+load_results(results_dir) -> ResultsFolder
+    The folder's tables, tolerating missing optional files.
+sensor_colors(sensors, reference)
+    The one sensor -> colour mapping every figure uses.
+"""
+
+from __future__ import annotations
+
+from .build import write_report
+from .load import ResultsFolder, load_results
+from .style import sensor_colors
+
+__all__ = ["ResultsFolder", "load_results", "sensor_colors", "write_report"]

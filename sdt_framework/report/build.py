@@ -1,0 +1,178 @@
+"""Assemble the report of a results folder and write report.md / report.html atomically."""
+
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from ..errors import SDTError
+from ..io import atomic_write_text
+from .document import Block, Code, Heading, Items, Paragraph, Table
+from .figures import draw_figures
+from .load import ResultsFolder, load_results
+from .render import render_html, render_markdown
+from .style import sensor_colors
+from .tables import allocation_table, delta_table, failed_table, table4_table
+
+__all__ = ["CAPTIONS", "FORMATS", "build_blocks", "write_report"]
+
+FORMATS = ("md", "html")
+
+#: what each figure shows (the fixed part of its caption)
+CAPTIONS = {
+    "fig2": "Paper Fig. 2: the recording (default: highest cavitation-suction level, ch1) "
+    "through every sensor's chain. (a) ~80 ms around the reference's largest peak; dotted "
+    "lines mark ±G_max of clipped profiles. (b) Welch amplitude spectral density.",
+    "fig3": "Paper Fig. 3: 2-D t-SNE of the standardised repetition-0 features, one panel per "
+    "sensor, coloured by class; at most 1000 windows per sensor (fixed random state).",
+    "fig4": "Paper Fig. 4: the chain of each noise-injecting profile on x_ref = 0 "
+    "(as `sdt validate-noise`). (a) time trace; (b) ASD with the 10–1500 Hz band and mean NSD.",
+    "fig6": "Paper Fig. 6: per class, the best F1 over classifiers (each classifier's F1 "
+    "averaged over repetitions first), per sensor.",
+    "fig7": "Paper Fig. 7: confusion matrices summed over repetitions and row-normalised, "
+    "for each machine's worst non-reference cell (lowest mean macro F1).",
+}
+
+
+def _overview(folder: ResultsFolder) -> list[Block]:
+    res, summary = folder.results, folder.summary or {}
+    blocks: list[Block] = [
+        Heading(f"Benchmark report: {folder.path.name}", 1),
+        Paragraph(
+            f"Dataset **{summary.get('dataset', res['dataset'].iloc[0] if len(res) else '?')}**; "
+            f"{len(res)} runs ({len(folder.ok)} ok, {len(folder.failed)} failed) over "
+            f"{res['machine'].nunique()} machine(s), {res['scenario'].nunique()} scenario(s), "
+            f"{len(folder.sensors)} sensor(s) ({', '.join(folder.sensors)}), "
+            f"{res['classifier'].nunique()} classifier(s). Reference sensor: "
+            f"`{folder.reference}`."
+        ),
+    ]
+    if folder.problems:
+        blocks += [
+            Paragraph(
+                "**Missing or unreadable inputs** (parts of the report that need "
+                "them are left out):"
+            ),
+            Items(tuple(folder.problems)),
+        ]
+    return blocks
+
+
+def _provenance(folder: ResultsFolder) -> list[Block]:
+    blocks: list[Block] = [Heading("Provenance", 2)]
+    summary = folder.summary or {}
+    if folder.allocation is not None and not folder.allocation.empty:
+        blocks += [Heading("Train/test allocation", 3), allocation_table(folder.allocation)]
+    if folder.skipped is not None and not folder.skipped.empty:
+        rows = tuple(tuple(str(v) for v in r) for r in folder.skipped.itertuples(index=False))
+        blocks += [
+            Heading("Skipped machine/scenario pairs", 3),
+            Table(tuple(folder.skipped.columns), rows),
+        ]
+    if summary.get("dataset_skipped"):
+        items = tuple(f"{s.get('path')}: {s.get('reason')}" for s in summary["dataset_skipped"])
+        blocks += [Heading("Dataset entries skipped", 3), Items(items)]
+    blocks.append(Heading("Configuration (config.toml)", 3))
+    blocks.append(
+        Code(folder.config_text, "toml")
+        if folder.config_text
+        else Paragraph("config.toml is missing.")
+    )
+    if summary:
+        seconds = summary.get("seconds", {})
+        timing = tuple((k, f"{float(v):.1f}") for k, v in seconds.items())
+        total = ("total", f"{sum(seconds.values()):.1f}")
+        blocks += [Heading("Timing", 3), Table(("stage", "seconds"), (*timing, total))]
+        counts = [
+            k
+            for k in (
+                "runs_computed",
+                "runs_resumed",
+                "feature_blocks_computed",
+                "feature_blocks_cached",
+            )
+            if k in summary
+        ]
+        if counts:
+            blocks.append(Items(tuple(f"{k.replace('_', ' ')}: {summary[k]}" for k in counts)))
+        software = summary.get("software", {})
+        blocks += [
+            Heading("Software", 3),
+            Table(("package", "version"), tuple((k, str(v)) for k, v in software.items())),
+        ]
+    return blocks
+
+
+def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> list[Block]:
+    """The whole report as blocks; draws the figures into ``figures_dir``."""
+    colors = sensor_colors(folder.sensors, folder.reference)
+    blocks = _overview(folder)
+    blocks += [
+        Heading("Table 4: Macro F1 (mean ± SD)", 2),
+        table4_table(folder.results, folder.sensors),
+    ]
+    delta = delta_table(folder.results, folder.sensors, folder.reference)
+    blocks.append(Heading(f"Delta to the reference ({folder.reference})", 2))
+    blocks.append(
+        delta
+        if delta is not None
+        else Paragraph(f"Not shown: the reference sensor {folder.reference} has no successful run.")
+    )
+    if not folder.failed.empty:
+        blocks += [Heading("Failed runs", 2), failed_table(folder.failed)]
+    blocks.append(Heading("Figures", 2))
+    blocks += draw_figures(folder, registry, colors, figures_dir, CAPTIONS)
+    return blocks + _provenance(folder)
+
+
+def write_report(
+    results_dir: str | os.PathLike[str],
+    formats: Sequence[str] = FORMATS,
+    *,
+    registry: Any = None,
+) -> dict[str, Path]:
+    """Write the report of ``results_dir`` into that folder.
+
+    Parameters
+    ----------
+    results_dir
+        A folder written by ``sdt benchmark``; only the results table is required.
+    formats
+        Any of "md" (report.md, figures linked) and "html" (report.html, self-contained).
+    registry
+        Registry used to look up sensors and the dataset; default: the installed one.
+
+    Returns
+    -------
+    dict
+        ``{format: path}`` of each file written; figures go to ``results_dir/figures``.
+
+    Raises
+    ------
+    SDTError
+        For an unknown format, a path that is not a folder, or no results table.
+    """
+    unknown = sorted(set(formats) - set(FORMATS))
+    if unknown or not formats:
+        raise SDTError(f"unknown report format(s) {unknown or formats}; choose from md, html")
+    start = time.perf_counter()
+    folder = load_results(results_dir)
+    if registry is None:
+        from ..registry import build_registry
+
+        registry = build_registry()
+    blocks = build_blocks(folder, registry, folder.path / "figures")
+    took = time.perf_counter() - start
+    blocks.append(Paragraph(f"Report drawn in {took:.1f} s by `sdt report`."))
+    written: dict[str, Path] = {}
+    if "md" in formats:
+        written["md"] = folder.path / "report.md"
+        atomic_write_text(written["md"], render_markdown(blocks, folder.path))
+    if "html" in formats:
+        written["html"] = folder.path / "report.html"
+        title = f"sdt-framework report: {folder.path.name}"
+        atomic_write_text(written["html"], render_html(blocks, title))
+    return written

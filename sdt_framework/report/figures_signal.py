@@ -1,0 +1,148 @@
+"""Signal figures: the SDT on one recording (paper Fig. 2) and zero-motion noise (Fig. 4).
+
+Both draw data prepared by :mod:`.signals`; the noise figure reuses the
+statistics of :class:`sdt_framework.chain.NoiseCheck` (the same Welch settings
+as ``sdt validate-noise --plot``) but puts every noisy profile in one figure
+with the report's sensor colours.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+from matplotlib.figure import Figure
+from scipy import signal
+
+from ..chain import NoiseCheck
+from ..chain.noise_check import BAND_HZ
+from .signals import SensorTrace
+from .style import LINESTYLES, new_figure
+
+__all__ = ["plot_noise", "plot_sdt_overlay"]
+
+
+def _asd(x: np.ndarray, fs: float) -> tuple[np.ndarray, np.ndarray]:
+    """Welch ASD in g/sqrt(Hz), ~0.1 s segments (a power of two), Hann, 50 % overlap."""
+    nperseg = int(min(len(x), 2 ** round(np.log2(max(fs * 0.1, 16)))))
+    freqs, psd = signal.welch(x, fs=fs, nperseg=nperseg)
+    return freqs[1:], np.sqrt(psd[1:])
+
+
+def plot_sdt_overlay(
+    traces: Sequence[SensorTrace],
+    colors: dict[str, str],
+    *,
+    span_s: float = 0.08,
+    title: str = "",
+) -> Figure:
+    """(a) Time-domain overlay around the largest peak; (b) Welch ASD, log-log.
+
+    Parameters
+    ----------
+    traces
+        One :class:`SensorTrace` per sensor, the reference first (it sets the
+        time of the peak; the others keep their own causal-filter delay).
+    colors
+        Sensor colours (see :func:`.style.sensor_colors`).
+    span_s
+        Width of the time window shown, s (centred on the reference's largest |x|).
+    title
+        Figure title, e.g. the recording name.
+    """
+    fig = new_figure(12, 4.6)
+    ax_t, ax_f = fig.subplots(1, 2)
+    first = traces[0]
+    peak = int(np.argmax(np.abs(first.signal))) / first.fs
+    start = max(0.0, peak - span_s / 2)
+    for i, trace in enumerate(traces):
+        t = np.arange(len(trace.signal)) / trace.fs
+        shown = (t >= start) & (t <= start + span_s)
+        color = colors.get(trace.sensor)
+        style = LINESTYLES[i % len(LINESTYLES)]
+        label = trace.sensor + (" (clipped)" if trace.clipped else "")
+        ax_t.plot(
+            (t[shown] - start) * 1e3,
+            trace.signal[shown],
+            color=color,
+            ls=style,
+            lw=1.0 if i else 0.8,
+            label=label,
+        )
+        if trace.clipped:
+            for level in (-trace.full_scale_g, trace.full_scale_g):
+                ax_t.axhline(level, color=color, ls=":", lw=0.9)
+            ax_t.annotate(
+                f"±{trace.full_scale_g:g} g",
+                (1.0, trace.full_scale_g),
+                color=color,
+                xycoords=("axes fraction", "data"),
+                ha="right",
+                va="bottom",
+                fontsize=8,
+            )
+        freqs, asd = _asd(trace.signal, trace.fs)
+        ax_f.loglog(
+            freqs, asd, color=color, ls=style, lw=1.0, label=f"{trace.sensor} ({trace.fs:g} Hz)"
+        )
+    ax_t.set(
+        xlabel=f"time from {start * 1e3:.0f} ms, ms",
+        ylabel="acceleration, g",
+        title="(a) time domain around the largest peak",
+    )
+    ax_f.set(
+        xlabel="frequency, Hz", ylabel="ASD, g/√Hz", title="(b) amplitude spectral density (Welch)"
+    )
+    for ax in (ax_t, ax_f):
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8, loc="lower left" if ax is ax_f else "upper right")
+    if title:
+        fig.suptitle(title, fontsize=11)
+    return fig
+
+
+def plot_noise(checks: Sequence[NoiseCheck], colors: dict[str, str]) -> Figure:
+    """(a) First 50 ms of each profile's zero-motion output, mg; (b) its ASD, µg/√Hz.
+
+    The ASD uses the check's own settings (Welch, ``nperseg = window_length``
+    over its windows); the 10..1500 Hz NSD band is shaded and each mean NSD
+    drawn as a dashed line, as in ``sdt validate-noise --plot``.
+    """
+    fig = new_figure(12, 4.4)
+    ax_t, ax_f = fig.subplots(1, 2)
+    for i, check in enumerate(checks):
+        color = colors.get(check.sensor)
+        n = check.window_length
+        x = check.sdt_signal[:n] - np.mean(check.sdt_signal[:n])
+        t_ms = np.arange(n) / check.sdt_fs * 1e3
+        shown = t_ms <= 50.0
+        ax_t.step(
+            t_ms[shown],
+            x[shown] * 1e3,
+            where="post",
+            lw=0.7,
+            color=color,
+            ls=LINESTYLES[i % len(LINESTYLES)],
+            label=f"{check.sensor}: RMS {check.sdt.rms_mg.mean():.2f} mg",
+        )
+        freqs, psd = signal.welch(
+            check.sdt_signal[: check.n_windows * n], fs=check.sdt_fs, nperseg=n
+        )
+        nsd = check.sdt.nsd_ug_rthz.mean()
+        ax_f.loglog(
+            freqs[1:],
+            np.sqrt(psd[1:]) * 1e6,
+            lw=0.8,
+            color=color,
+            label=f"{check.sensor}: NSD {nsd:.1f} µg/√Hz",
+        )
+        ax_f.axhline(nsd, color=color, ls="--", lw=0.8)
+    ax_f.axvspan(*BAND_HZ, color="0.92", zorder=0, label="NSD band 10–1500 Hz")
+    ax_t.set(
+        xlabel="time, ms", ylabel="acceleration, mg", title="(a) zero-motion noise (SDT, x_ref = 0)"
+    )
+    ax_f.set(xlabel="frequency, Hz", ylabel="ASD, µg/√Hz", title="(b) amplitude spectral density")
+    for ax in (ax_t, ax_f):
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8, loc="upper right")
+    return fig

@@ -1,0 +1,118 @@
+"""Render report blocks as Markdown (figures linked) or self-contained HTML (figures inlined).
+
+The HTML page has its style inline and every figure as a ``data:image/png;base64``
+URI: one file that opens anywhere, offline, with no external CSS, JS or fonts.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import os
+import re
+from collections.abc import Sequence
+from pathlib import Path
+
+from .document import Block, Code, Figure, Heading, Items, Paragraph, Table
+
+__all__ = ["render_html", "render_markdown"]
+
+_BOLD = re.compile(r"\*\*(.+?)\*\*")
+_CODE = re.compile(r"`([^`]+)`")
+_CSS = """
+body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;margin:2em auto;
+max-width:1200px;padding:0 1em;color:#222;line-height:1.45}
+h1{border-bottom:2px solid #ccc}h2{border-bottom:1px solid #ddd;margin-top:2em}
+table{border-collapse:collapse;margin:1em 0;font-size:.85em}
+th,td{border:1px solid #ccc;padding:.25em .5em;text-align:right;white-space:nowrap}
+th:first-child,td:first-child{text-align:left}th{background:#f0f0f0}
+tr.block td{background:#fafafa;text-align:left}
+figure{margin:1.5em 0}figure img{max-width:100%;height:auto;border:1px solid #eee}
+figcaption,.note{font-size:.9em;color:#555}
+pre{background:#f6f6f6;padding:.8em;overflow-x:auto;font-size:.85em}
+code{background:#f3f3f3;padding:0 .2em}
+"""
+
+
+def _inline_html(text: str) -> str:
+    escaped = html.escape(text, quote=False)
+    escaped = _CODE.sub(r"<code>\1</code>", escaped)
+    return _BOLD.sub(r"<strong>\1</strong>", escaped)
+
+
+def _is_block_row(row: Sequence[str]) -> bool:
+    return row[0].startswith("**") and not any(row[1:])
+
+
+def _md_cell(text: str) -> str:
+    return text.replace("|", "\\|").replace("\n", " ")
+
+
+def render_markdown(blocks: Sequence[Block], base: str | os.PathLike[str]) -> str:
+    """Markdown text; figures are linked relative to ``base`` (the report's folder)."""
+    out: list[str] = []
+    for block in blocks:
+        if isinstance(block, Heading):
+            out.append(f"{'#' * block.level} {block.text}")
+        elif isinstance(block, Paragraph):
+            out.append(block.text)
+        elif isinstance(block, Items):
+            out.append("\n".join(f"- {item}" for item in block.items))
+        elif isinstance(block, Code):
+            out.append(f"```{block.lang}\n{block.text.rstrip()}\n```")
+        elif isinstance(block, Table):
+            lines = ["| " + " | ".join(_md_cell(c) for c in block.header) + " |"]
+            lines.append("|" + "---|" * len(block.header))
+            lines += ["| " + " | ".join(_md_cell(c) for c in row) + " |" for row in block.rows]
+            out.append("\n".join(lines) + (f"\n\n{block.note}" if block.note else ""))
+        elif isinstance(block, Figure):
+            rel = Path(os.path.relpath(block.path, base)).as_posix()
+            out.append(f"![{block.alt or block.caption}]({rel})\n\n*{block.caption}*")
+            out += list(block.extra)
+    return "\n\n".join(out) + "\n"
+
+
+def _html_table(table: Table) -> str:
+    head = "".join(f"<th>{_inline_html(c)}</th>" for c in table.header)
+    rows = []
+    for row in table.rows:
+        if _is_block_row(row):
+            span = len(table.header)
+            rows.append(f'<tr class="block"><td colspan="{span}">{_inline_html(row[0])}</td></tr>')
+        else:
+            rows.append("<tr>" + "".join(f"<td>{_inline_html(c)}</td>" for c in row) + "</tr>")
+    note = f'<p class="note">{_inline_html(table.note)}</p>' if table.note else ""
+    return f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>{note}"
+
+
+def render_html(blocks: Sequence[Block], title: str) -> str:
+    """One self-contained HTML page: inline CSS, figures as base64 PNG data URIs."""
+    body: list[str] = []
+    for block in blocks:
+        if isinstance(block, Heading):
+            level = min(max(block.level, 1), 6)
+            body.append(f"<h{level}>{_inline_html(block.text)}</h{level}>")
+        elif isinstance(block, Paragraph):
+            body.append(f"<p>{_inline_html(block.text)}</p>")
+        elif isinstance(block, Items):
+            items = "".join(f"<li>{_inline_html(i)}</li>" for i in block.items)
+            body.append(f"<ul>{items}</ul>")
+        elif isinstance(block, Code):
+            body.append(f"<pre><code>{html.escape(block.text.rstrip())}</code></pre>")
+        elif isinstance(block, Table):
+            body.append(_html_table(block))
+        elif isinstance(block, Figure):
+            data = base64.b64encode(Path(block.path).read_bytes()).decode("ascii")
+            alt = html.escape(block.alt or block.caption)
+            extra = "".join(f"<p>{_inline_html(e)}</p>" for e in block.extra)
+            body.append(
+                f'<figure><img alt="{alt}" src="data:image/png;base64,{data}">'
+                f"<figcaption>{_inline_html(block.caption)}</figcaption></figure>{extra}"
+            )
+    return (
+        '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
+        '<meta name="viewport" content="width=device-width, initial-scale=1">'
+        f"<title>{html.escape(title)}</title><style>{_CSS}</style></head>\n<body>\n"
+        + "\n".join(body)
+        + "\n</body></html>\n"
+    )

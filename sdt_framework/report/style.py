@@ -1,0 +1,74 @@
+"""One look for every report figure: the sensor palette, the backend, saving.
+
+Every figure colours a sensor the same way (the reference grey, as in the
+paper), draws with the Agg backend (no display needed) and is saved at the
+same resolution, atomically, so a half-written PNG never sits in a report.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+from matplotlib.figure import Figure
+
+from ..io import atomic_path
+
+__all__ = ["DPI", "REFERENCE_COLOR", "new_figure", "save_figure", "sensor_colors"]
+
+DPI = 110
+REFERENCE_COLOR = "0.45"
+#: colours for the non-reference sensors, in order (red first, as the paper's ADXL345)
+_CYCLE = ("#d62728", "#2ca02c", "#1f77b4", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf")
+LINESTYLES = ("-", "--", "-.", ":")
+
+
+def sensor_colors(sensors: Sequence[str], reference: str | None) -> dict[str, str]:
+    """Map each sensor name to one colour: the reference grey, the others from a fixed cycle.
+
+    Parameters
+    ----------
+    sensors
+        Sensor names in report order; the order fixes the colours, so pass the
+        configuration's sensor list to every figure of one report.
+    reference
+        Name of the reference sensor (drawn grey), or None.
+
+    Returns
+    -------
+    dict
+        ``{sensor: matplotlib colour}``.
+    """
+    colors: dict[str, str] = {}
+    others = [s for s in dict.fromkeys(sensors) if s != reference]
+    for i, name in enumerate(others):
+        colors[name] = _CYCLE[i % len(_CYCLE)]
+    if reference is not None and reference in sensors:
+        colors[reference] = REFERENCE_COLOR
+    return colors
+
+
+def new_figure(width: float, height: float) -> Figure:
+    """A matplotlib Figure on the Agg canvas with constrained (tight) layout.
+
+    Uses :class:`matplotlib.figure.Figure` directly rather than pyplot, so no
+    global figure state accumulates while a report draws many figures.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = Figure(figsize=(width, height), layout="constrained", dpi=DPI)
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def save_figure(fig: Figure, path: str | os.PathLike[str]) -> Path:
+    """Save ``fig`` as PNG at :data:`DPI`, atomically; return the path."""
+    path = Path(path)
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, format="png", dpi=DPI, facecolor="white")
+    return path

@@ -1,0 +1,108 @@
+"""The report's tables as data: Table 4, deltas to the reference, allocation, failures.
+
+Table 4 itself comes from :func:`sdt_framework.bench.results.table4_markdown`
+(the same text as ``table4.md``); the delta table is built from the same
+:func:`~sdt_framework.bench.results.table4` pivot so both always agree.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from ..bench.results import SCENARIO_TITLES, table4, table4_markdown
+from .document import Table, parse_md_table
+
+__all__ = ["allocation_table", "delta_table", "failed_table", "table4_table"]
+
+
+def table4_table(results: pd.DataFrame, sensors: list[str]) -> Table:
+    """Paper Table 4: mean ± SD Macro F1 per scenario/sensor x machine/classifier."""
+    return parse_md_table(table4_markdown(results, sensors))
+
+
+def delta_table(results: pd.DataFrame, sensors: list[str], reference: str) -> Table | None:
+    """Mean Macro F1 of each sensor minus the reference's, per cell.
+
+    Parameters
+    ----------
+    results
+        The tidy results table (failed runs are ignored).
+    sensors
+        Sensor order for the rows.
+    reference
+        The reference sensor; None is returned when it has no successful run.
+
+    Returns
+    -------
+    Table or None
+        Scenario blocks of one row per non-reference sensor; the largest delta
+        of each column within a block is bold (the sensor that loses least).
+    """
+    wide = table4(results)
+    if wide.empty or reference not in wide.index.get_level_values("sensor"):
+        return None
+    columns = sorted({(m, c) for m, c, _ in wide.columns})
+    rows: list[tuple[str, ...]] = []
+    for scenario in [s for s in SCENARIO_TITLES if s in wide.index.get_level_values(0)]:
+        block = wide.loc[scenario]
+        if reference not in block.index:
+            continue
+        means = block.xs("mean", axis=1, level=2)
+        delta = means.drop(index=reference) - means.loc[reference]
+        order = [s for s in sensors if s in delta.index] + [
+            s for s in delta.index if s not in sensors
+        ]
+        if not order:
+            continue
+        rows.append((f"**{SCENARIO_TITLES[scenario]}**",) + ("",) * len(columns))
+        best = {col: delta[col].max() for col in columns}
+        for sensor in order:
+            cells = []
+            for col in columns:
+                value = delta.loc[sensor, col]
+                text = "–" if np.isnan(value) else f"{value:+.4f}"
+                bold = not np.isnan(value) and value == best[col]
+                cells.append(f"**{text}**" if bold else text)
+            rows.append((sensor, *cells))
+    header = ("Sensor", *(f"{m} {c.upper()}" for m, c in columns))
+    note = (
+        f"Mean Macro F1 of the sensor minus that of the reference ({reference}) for the "
+        "same scenario, machine and classifier; negative = the sensor costs performance. "
+        "Largest delta per column and scenario in bold."
+    )
+    return Table(header, tuple(rows), note)
+
+
+def _runs(names: pd.Series, limit: int = 6) -> str:
+    runs = sorted(set(names))
+    shown = ", ".join(runs[:limit])
+    return f"{len(runs)}: {shown}" + (f", … (+{len(runs) - limit})" if len(runs) > limit else "")
+
+
+def allocation_table(allocation: pd.DataFrame) -> Table:
+    """Per machine and scenario: the number of train and test runs and their names (shortened)."""
+    rows = []
+    for (machine, scenario), part in allocation.groupby(["machine", "scenario"], sort=True):
+        rows.append(
+            (
+                str(machine),
+                str(scenario),
+                _runs(part.loc[part["side"] == "train", "run"]),
+                _runs(part.loc[part["side"] == "test", "run"]),
+            )
+        )
+    note = "A run is one condition directory with all its channels; full table: allocation.csv."
+    return Table(("Machine", "Scenario", "Train runs", "Test runs"), tuple(rows), note)
+
+
+def failed_table(failed: pd.DataFrame, limit: int = 50) -> Table:
+    """Failed runs with the first line of their error (at most ``limit`` rows)."""
+    keys = ["machine", "scenario", "sensor", "classifier", "repeat"]
+    rows = []
+    for _, run in failed.head(limit).iterrows():
+        error = str(run.get("error") or "no message").strip().splitlines() or ["no message"]
+        rows.append((*(str(run[k]) for k in keys), error[0][:200]))
+    more = f"; first {limit} shown" if len(failed) > limit else ""
+    note = f"{len(failed)} failed run(s){more}"
+    return Table((*keys, "error"), tuple(rows), note + "; full messages in results.csv.")
