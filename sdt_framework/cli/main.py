@@ -13,6 +13,7 @@ from . import dataset as dataset_cli
 from .benchmark import benchmark
 from .chain import register as register_chain_commands
 from .common import err_console
+from .report import report
 
 app = typer.Typer(
     name="sdt",
@@ -28,6 +29,7 @@ app.add_typer(classifiers.app, name="classifiers")
 app.add_typer(dataset_cli.app, name="dataset")
 register_chain_commands(app)
 app.command("benchmark")(benchmark)
+app.command("report")(report)
 
 
 @app.callback()

@@ -125,7 +125,8 @@ def plot_confusions(confusion: pd.DataFrame, cells: pd.DataFrame) -> Figure:
         ax.set(xlabel="predicted class", ylabel="true class")
         score = f", macro F1 {cell['macro_f1']:.3f}" if "macro_f1" in cell else ""
         ax.set_title(
-            f"{cell['machine']}, {cell['scenario']}\n{cell['sensor']} + "
+            f"{cell['machine']}, {SCENARIO_TITLES.get(cell['scenario'], cell['scenario'])}\n"
+            f"{cell['sensor']} + "
             f"{str(cell['classifier']).upper()}{score}",
             fontsize=9,
         )

@@ -142,7 +142,7 @@ def plot_noise(checks: Sequence[NoiseCheck], colors: dict[str, str]) -> Figure:
         xlabel="time, ms", ylabel="acceleration, mg", title="(a) zero-motion noise (SDT, x_ref = 0)"
     )
     ax_f.set(xlabel="frequency, Hz", ylabel="ASD, µg/√Hz", title="(b) amplitude spectral density")
-    for ax in (ax_t, ax_f):
+    for ax, where in ((ax_t, "upper right"), (ax_f, "lower left")):
         ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=8, loc="upper right")
+        ax.legend(fontsize=8, loc=where)
     return fig
