@@ -1,0 +1,65 @@
+"""A small real results folder (built once per session) and PNG checks for the report tests."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+from matplotlib import image
+
+from sdt_framework import build_registry
+from sdt_framework.bench.config import BenchmarkConfig
+from sdt_framework.bench.output import write_outputs
+from sdt_framework.bench.runner import plan_benchmark, run_benchmark
+
+#: Motor-2 only, 1.5 s acquisitions, 2 channels, reference + one MEMS, 2 classifiers.
+SMALL = {
+    "dataset_options": {"duration": 1.5},
+    "machines": ["Motor-2"],
+    "channels": ["ch1", "ch4"],
+    "sensors": ["wilcoxon-786b10", "adxl345"],
+    "classifiers": ["lr", "knn"],
+    "repeats": 2,
+    "jobs": 1,
+    "report": False,
+}
+
+
+@pytest.fixture(scope="session")
+def registry():
+    """The installed registry (built-in plugins)."""
+    return build_registry()
+
+
+@pytest.fixture(scope="session")
+def results_master(tmp_path_factory, registry) -> Path:
+    """A benchmark results folder, written once; tests copy it (see ``results_dir``)."""
+    root = tmp_path_factory.mktemp("report-results")
+    config = BenchmarkConfig(**{**SMALL, "cache_dir": str(root / "cache")})
+    out = root / "results"
+    write_outputs(run_benchmark(plan_benchmark(config, registry), out), out)
+    return out
+
+
+@pytest.fixture
+def results_dir(results_master, tmp_path) -> Path:
+    """A private copy of the small results folder, free to damage."""
+    target = tmp_path / "results"
+    shutil.copytree(results_master, target, ignore=shutil.ignore_patterns("runs", "cache"))
+    return target
+
+
+def assert_real_png(path: Path, min_bytes: int = 8000) -> None:
+    """``path`` is a PNG a person could look at: decodes, big enough, many colours."""
+    assert path.is_file(), path
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n", f"{path} is not a PNG"
+    assert path.stat().st_size > min_bytes, f"{path}: only {path.stat().st_size} bytes"
+    pixels = image.imread(path)
+    assert pixels.ndim == 3 and pixels.shape[0] > 300 and pixels.shape[1] > 400, pixels.shape
+    rgb = (pixels[..., :3] * 255).astype(np.uint8).reshape(-1, 3)
+    colours = np.unique(rgb, axis=0)
+    assert len(colours) > 30, f"{path}: only {len(colours)} distinct colours"
+    white = np.all(rgb > 250, axis=1).mean()
+    assert 0.2 < white < 0.995, f"{path}: {white:.1%} white pixels"
