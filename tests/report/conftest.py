@@ -51,6 +51,16 @@ def results_dir(results_master, tmp_path) -> Path:
     return target
 
 
+@pytest.fixture(scope="session")
+def full_report(results_master, registry, tmp_path_factory):
+    """(folder, written) of the report of an intact copy of the small results folder."""
+    from sdt_framework.report import write_report
+
+    target = tmp_path_factory.mktemp("full") / "results"
+    shutil.copytree(results_master, target, ignore=shutil.ignore_patterns("runs", "cache"))
+    return target, write_report(target, registry=registry)
+
+
 def assert_real_png(path: Path, min_bytes: int = 8000) -> None:
     """``path`` is a PNG a person could look at: decodes, big enough, many colours."""
     assert path.is_file(), path
@@ -58,8 +68,8 @@ def assert_real_png(path: Path, min_bytes: int = 8000) -> None:
     assert path.stat().st_size > min_bytes, f"{path}: only {path.stat().st_size} bytes"
     pixels = image.imread(path)
     assert pixels.ndim == 3 and pixels.shape[0] > 300 and pixels.shape[1] > 400, pixels.shape
-    rgb = (pixels[..., :3] * 255).astype(np.uint8).reshape(-1, 3)
-    colours = np.unique(rgb, axis=0)
+    rgb = (pixels[..., :3] * 255).astype(np.uint32).reshape(-1, 3)
+    colours = np.unique(rgb[:, 0] << 16 | rgb[:, 1] << 8 | rgb[:, 2])
     assert len(colours) > 30, f"{path}: only {len(colours)} distinct colours"
     white = np.all(rgb > 250, axis=1).mean()
     assert 0.2 < white < 0.995, f"{path}: {white:.1%} white pixels"

@@ -19,17 +19,6 @@ from .conftest import assert_real_png
 PNGS = [name for name, _ in FIGURES.values()]
 
 
-@pytest.fixture(scope="module")
-def full_report(results_master, registry, tmp_path_factory):
-    """The report of an intact copy of the small results folder, written once."""
-    import shutil
-
-    target = tmp_path_factory.mktemp("full") / "results"
-    shutil.copytree(results_master, target, ignore=shutil.ignore_patterns("runs", "cache"))
-    written = write_report(target, registry=registry)
-    return target, written
-
-
 def test_every_figure_is_a_real_png(full_report):
     folder, _ = full_report
     for name in PNGS:
@@ -120,6 +109,12 @@ def test_unusable_folder_is_one_clear_error(tmp_path, case):
         write_report(target)
 
 
+def test_unknown_format_is_refused_before_any_work(results_dir):
+    with pytest.raises(SDTError, match="pdf"):
+        write_report(results_dir, ["md", "pdf"])
+    assert not (results_dir / "figures").exists()
+
+
 def _sdt(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
     code = "from sdt_framework.cli.main import main; main()"
     return subprocess.run(
@@ -135,5 +130,3 @@ def test_cli_report_and_errors(results_dir, tmp_path):
     missing = _sdt("report", str(tmp_path / "nowhere"), cwd=tmp_path)
     assert missing.returncode == 2
     assert missing.stderr.strip().count("\n") == 0 and "nowhere" in missing.stderr
-    bad_format = _sdt("report", str(results_dir), "--format", "pdf", cwd=tmp_path)
-    assert bad_format.returncode == 2 and "pdf" in bad_format.stderr
