@@ -30,7 +30,7 @@ tr.block td{background:#fafafa;text-align:left}
 figure{margin:1.5em 0}figure img{max-width:100%;height:auto;border:1px solid #eee}
 figcaption,.note{font-size:.9em;color:#555}
 pre{background:#f6f6f6;padding:.8em;overflow-x:auto;font-size:.85em}
-code{background:#f3f3f3;padding:0 .2em}
+code{background:#f3f3f3;padding:0 .2em}.scroll{overflow-x:auto}
 """
 
 
@@ -82,7 +82,8 @@ def _html_table(table: Table) -> str:
         else:
             rows.append("<tr>" + "".join(f"<td>{_inline_html(c)}</td>" for c in row) + "</tr>")
     note = f'<p class="note">{_inline_html(table.note)}</p>' if table.note else ""
-    return f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>{note}"
+    table_html = f"<table><thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
+    return f'<div class="scroll">{table_html}</div>{note}'
 
 
 def render_html(blocks: Sequence[Block], title: str) -> str:
