@@ -132,6 +132,7 @@ def benchmark(
         f"{len(plan.classifiers)} classifiers, {len(config.scenarios)} scenarios, "
         f"{config.repeats} repeats -> {out_dir}",
         highlight=False,
+        soft_wrap=True,
     )
     columns = (
         TextColumn("{task.description:>9}"),
@@ -153,10 +154,11 @@ def benchmark(
     if config.report:
         from ..report import write_report  # the report layer sits above the benchmark
 
-        write_report(out_dir)
+        write_report(out_dir, registry=registry(ctx))
     failed = int((results["status"] == "error").sum())
     console.print(
         f"{len(results)} runs ({result.runs_computed} computed, {result.runs_resumed} resumed, "
         f"{failed} failed) in {sum(result.seconds.values()):.0f} s; results in {out_dir}",
         highlight=False,
+        soft_wrap=True,
     )
