@@ -173,7 +173,17 @@ def _run_key(
 
 
 def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
+    """All feature blocks as one table, in plan order (never in completion order).
+
+    Row order matters: bootstrap samples (rf), minibatches (mlp) and tree
+    building (xgb) depend on it, so it must not depend on which worker finished
+    first.
+    """
     by_id = {r.recording_id: r for r in plan.recordings}
+    position = {r.recording_id: i for i, r in enumerate(plan.recordings)}
+    sensor_position = {s.name: i for i, s in enumerate(plan.sensors)}
+    blocks = sorted(blocks, key=lambda b: (position[b.recording_id],
+                                           sensor_position[b.sensor], b.repeat))
     frames = []
     for b in blocks:
         rec = by_id[b.recording_id]
