@@ -27,9 +27,19 @@ def test_config_file_and_options(tmp_path):
     result = CliRunner().invoke(
         app,
         [
-            "benchmark", str(config), "--sensors", "wilcoxon-786b10,adxl357",
-            "--scenarios", "forward,interpolation", "--out", str(out), "--jobs", "1",
-            "--cache-dir", str(tmp_path / "cache"), "--no-report",
+            "benchmark",
+            str(config),
+            "--sensors",
+            "wilcoxon-786b10,adxl357",
+            "--scenarios",
+            "forward,interpolation",
+            "--out",
+            str(out),
+            "--jobs",
+            "1",
+            "--cache-dir",
+            str(tmp_path / "cache"),
+            "--no-report",
         ],
         env={"COLUMNS": "120"},
     )
@@ -45,15 +55,22 @@ def test_config_file_and_options(tmp_path):
 
 
 def run_sdt(*args: str) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, "-m", "sdt_framework", "benchmark", *args],
-                          capture_output=True, text=True, check=False)
+    return subprocess.run(
+        [sys.executable, "-m", "sdt_framework", "benchmark", *args],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
 
 
 def test_bad_configuration_is_one_line_before_any_work(tmp_path):
     for args, message in [
         (["--sensors", "adxl999"], "error: unknown sensor 'adxl999'"),
         (["--repeats", "-3"], "error: command line: field 'repeats': Input should be greater"),
-        (["--scenarios", "sideways"], "error: command line: field 'scenarios.0': Input should be 'forward'"),
+        (
+            ["--scenarios", "sideways"],
+            "error: command line: field 'scenarios.0': Input should be 'forward'",
+        ),
     ]:
         out = tmp_path / "never"
         result = run_sdt(*args, "--out", str(out))
