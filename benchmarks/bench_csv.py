@@ -41,8 +41,23 @@ def main() -> None:
     args = parser.parse_args()
     data = np.random.default_rng(0).normal(0, 0.5, (args.columns, args.rows))
     with tempfile.TemporaryDirectory() as tmp:
-        rec = Recording("bench", "Motor-4", "70", "healthy", None, "healthy 1", "ch1", "b",
-                        20000.0, "g", args.columns, args.rows, (), "memory", lambda: data)
+        rec = Recording(
+            "bench",
+            "Motor-4",
+            "70",
+            "healthy",
+            None,
+            "healthy 1",
+            "ch1",
+            "b",
+            20000.0,
+            "g",
+            args.columns,
+            args.rows,
+            (),
+            "memory",
+            lambda: data,
+        )
         (path,) = write_nln_emp(Dataset("bench", [rec], []), tmp)
         size_mb = path.stat().st_size / 1e6
         ours = _best(lambda: parse_nln_csv(path))

@@ -182,8 +182,9 @@ def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
     by_id = {r.recording_id: r for r in plan.recordings}
     position = {r.recording_id: i for i, r in enumerate(plan.recordings)}
     sensor_position = {s.name: i for i, s in enumerate(plan.sensors)}
-    blocks = sorted(blocks, key=lambda b: (position[b.recording_id],
-                                           sensor_position[b.sensor], b.repeat))
+    blocks = sorted(
+        blocks, key=lambda b: (position[b.recording_id], sensor_position[b.sensor], b.repeat)
+    )
     frames = []
     for b in blocks:
         rec = by_id[b.recording_id]

@@ -26,11 +26,16 @@ def list_datasets(
     """
     specs = registry(ctx).datasets()
     if as_json:
-        print_json([{**d.content_dict(), "plugin": d.plugin, "distribution": d.distribution}
-                    for d in specs])
+        print_json(
+            [
+                {**d.content_dict(), "plugin": d.plugin, "distribution": d.distribution}
+                for d in specs
+            ]
+        )
         return
-    rows = [[d.name, "yes" if d.requires_path else "no", d.description, d.distribution]
-            for d in specs]
+    rows = [
+        [d.name, "yes" if d.requires_path else "no", d.description, d.distribution] for d in specs
+    ]
     table("Datasets", ["name", "needs path", "description", "distribution"], rows)
 
 
@@ -40,9 +45,11 @@ def synth(
     out: Annotated[Path, typer.Option("--out", help="Folder to write Vibration/... into.")],
     seed: int | None = typer.Option(None, "--seed", help="Base seed (default 0)."),
     acquisitions: int | None = typer.Option(
-        None, "--acquisitions", help="Acquisitions (CSV columns) per file (default 1)."),
+        None, "--acquisitions", help="Acquisitions (CSV columns) per file (default 1)."
+    ),
     duration: float | None = typer.Option(
-        None, "--duration", help="Seconds per acquisition (default 12)."),
+        None, "--duration", help="Seconds per acquisition (default 12)."
+    ),
 ) -> None:
     """Write the synthetic pump dataset in the NLN-EMP layout and CSV format.
 
@@ -60,18 +67,23 @@ def synth(
     start = time.perf_counter()
     written = write_nln_emp(dataset, out)
     size = sum(p.stat().st_size for p in written) / 1e6
-    err_console.print(f"wrote {len(written)} files ({size:.1f} MB) under {out / 'Vibration'} "
-                      f"in {time.perf_counter() - start:.1f} s", highlight=False)
+    err_console.print(
+        f"wrote {len(written)} files ({size:.1f} MB) under {out / 'Vibration'} "
+        f"in {time.perf_counter() - start:.1f} s",
+        highlight=False,
+    )
 
 
 @app.command("inspect")
 def inspect(
     ctx: typer.Context,
     path_or_name: str = typer.Argument(
-        ..., help="NLN-EMP folder, manifest .csv/.parquet, or a dataset name."),
+        ..., help="NLN-EMP folder, manifest .csv/.parquet, or a dataset name."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
     validate: bool = typer.Option(
-        False, "--validate", help="Parse every file now (fills the cache; finds bad rows)."),
+        False, "--validate", help="Parse every file now (fills the cache; finds bad rows)."
+    ),
 ) -> None:
     """Summarise a dataset: one line per recording, then what was skipped and why.
 
@@ -92,18 +104,43 @@ def inspect(
     if as_json:
         print_json(info)
         return
-    rows = [[r["machine"], r["speed"] or "-", r["condition"],
-             "-" if r["severity"] is None else r["severity"], r["channel"], r["run"],
-             r["recording_id"], r["n_acquisitions"], r["samples_per_acquisition"],
-             f"{r['sampling_rate_hz']:g}"] for r in info["recordings"]]
-    header = ["machine", "speed", "condition", "severity", "channel", "run", "recording_id",
-              "acquisitions", "samples", "fs_hz"]
+    rows = [
+        [
+            r["machine"],
+            r["speed"] or "-",
+            r["condition"],
+            "-" if r["severity"] is None else r["severity"],
+            r["channel"],
+            r["run"],
+            r["recording_id"],
+            r["n_acquisitions"],
+            r["samples_per_acquisition"],
+            f"{r['sampling_rate_hz']:g}",
+        ]
+        for r in info["recordings"]
+    ]
+    header = [
+        "machine",
+        "speed",
+        "condition",
+        "severity",
+        "channel",
+        "run",
+        "recording_id",
+        "acquisitions",
+        "samples",
+        "fs_hz",
+    ]
     widths = [max(len(str(x)) for x in col) for col in zip(header, *rows, strict=False)]
     for line in [header, *rows]:
-        console.print("  ".join(str(x).ljust(w) for x, w in zip(line, widths, strict=True)),
-                      highlight=False, soft_wrap=True)
+        console.print(
+            "  ".join(str(x).ljust(w) for x, w in zip(line, widths, strict=True)),
+            highlight=False,
+            soft_wrap=True,
+        )
     if info["skipped"]:
         for item in info["skipped"]:
-            console.print(f"skipped {item['path']}: {item['reason']}", highlight=False,
-                          soft_wrap=True)
+            console.print(
+                f"skipped {item['path']}: {item['reason']}", highlight=False, soft_wrap=True
+            )
     console.print(dataset.summary_line(), highlight=False, soft_wrap=True)

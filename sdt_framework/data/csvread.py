@@ -106,8 +106,7 @@ def _check_values(path: Path, table: pa.Table, columns: list[str]) -> np.ndarray
     if bad.any():
         col, row = np.argwhere(bad)[0]
         raise DataFileError(
-            f"{path}: line {row + 2}, column {columns[col]!r}: non-finite value "
-            f"{data[col, row]!r}"
+            f"{path}: line {row + 2}, column {columns[col]!r}: non-finite value {data[col, row]!r}"
         )
     return data
 

@@ -62,15 +62,19 @@ def _row_fields(manifest: Path, line: int, row: pd.Series) -> dict[str, Any]:
     where = f"manifest {manifest} line {line}"
     for field in ("path", "condition", "recording_id", "channel"):
         if not _cell(row, field):
-            raise SDTError(f"{where}: field 'path'/'condition'/'recording_id'/'channel' "
-                           f"must not be empty (field {field!r} is)")
+            raise SDTError(
+                f"{where}: field 'path'/'condition'/'recording_id'/'channel' "
+                f"must not be empty (field {field!r} is)"
+            )
     try:
         rate = float(_cell(row, "sampling_rate_hz"))
         if not (np.isfinite(rate) and rate > 0):
             raise ValueError
     except ValueError:
-        raise SDTError(f"{where}: field 'sampling_rate_hz' = {_cell(row, 'sampling_rate_hz')!r} "
-                       f"is not a positive number") from None
+        raise SDTError(
+            f"{where}: field 'sampling_rate_hz' = {_cell(row, 'sampling_rate_hz')!r} "
+            f"is not a positive number"
+        ) from None
     text = _cell(row, "severity")
     try:
         severity = int(float(text)) if text and text.lower() != "nan" else None
@@ -82,16 +86,22 @@ def _row_fields(manifest: Path, line: int, row: pd.Series) -> dict[str, Any]:
     file = Path(_cell(row, "path")).expanduser()
     return {
         "file": file if file.is_absolute() else manifest.parent / file,
-        "rate": rate, "severity": severity, "units": units,
+        "rate": rate,
+        "severity": severity,
+        "units": units,
         "variable": _cell(row, "variable") or None,
-        "machine": _cell(row, "machine") or "machine", "speed": _cell(row, "speed") or None,
-        "condition": _cell(row, "condition"), "run": _cell(row, "recording_id"),
-        "channel": _cell(row, "channel"), "line": line,
+        "machine": _cell(row, "machine") or "machine",
+        "speed": _cell(row, "speed") or None,
+        "condition": _cell(row, "condition"),
+        "run": _cell(row, "recording_id"),
+        "channel": _cell(row, "channel"),
+        "line": line,
     }
 
 
-def open_manifest(path: str | os.PathLike[str], *, name: str = "manifest",
-                  validate: bool = False) -> Dataset:
+def open_manifest(
+    path: str | os.PathLike[str], *, name: str = "manifest", validate: bool = False
+) -> Dataset:
     """Open a manifest file; see the module docstring for its columns.
 
     Parameters
@@ -106,19 +116,26 @@ def open_manifest(path: str | os.PathLike[str], *, name: str = "manifest",
     columns = [str(c) for c in table.columns]
     unknown = sorted(set(columns) - set(REQUIRED) - set(OPTIONAL))
     if unknown:
-        raise SDTError(f"manifest {manifest}: unknown column(s) {', '.join(map(repr, unknown))}; "
-                       f"allowed: {', '.join(REQUIRED + OPTIONAL)}")
+        raise SDTError(
+            f"manifest {manifest}: unknown column(s) {', '.join(map(repr, unknown))}; "
+            f"allowed: {', '.join(REQUIRED + OPTIONAL)}"
+        )
     missing = [c for c in REQUIRED if c not in columns]
     if missing:
-        raise SDTError(f"manifest {manifest}: missing required column(s) "
-                       f"{', '.join(map(repr, missing))}")
+        raise SDTError(
+            f"manifest {manifest}: missing required column(s) {', '.join(map(repr, missing))}"
+        )
     groups: dict[tuple[str, str, str], list[dict[str, Any]]] = {}
     skipped: list[Skipped] = []
     for index, row in table.iterrows():
         fields = _row_fields(manifest, int(index) + 2, row)
         if not fields["file"].is_file():
-            skipped.append(Skipped(str(fields["file"]), f"file not found (manifest {manifest} "
-                                                        f"line {fields['line']})"))
+            skipped.append(
+                Skipped(
+                    str(fields["file"]),
+                    f"file not found (manifest {manifest} line {fields['line']})",
+                )
+            )
             continue
         try:
             fields["shape"] = signal_shape(fields["file"], fields["variable"])
@@ -136,18 +153,36 @@ def open_manifest(path: str | os.PathLike[str], *, name: str = "manifest",
         if len(lengths) > 1 or conflict:
             what = ", ".join(conflict) or f"acquisition lengths {sorted(lengths)}"
             lines = ", ".join(str(r["line"]) for r in rows)
-            skipped.append(Skipped(str(first["file"]), f"recording {run!r} channel {channel!r}: "
-                                   f"rows disagree on {what} (manifest lines {lines})"))
+            skipped.append(
+                Skipped(
+                    str(first["file"]),
+                    f"recording {run!r} channel {channel!r}: "
+                    f"rows disagree on {what} (manifest lines {lines})",
+                )
+            )
             continue
         n_acq = sum(r["shape"][0] for r in rows)
-        recordings.append(Recording(
-            dataset=name, machine=machine, speed=first["speed"], condition=first["condition"],
-            severity=first["severity"], run=run, channel=channel,
-            recording_id=f"{run}/{channel}", sampling_rate_hz=first["rate"],
-            units=first["units"], n_acquisitions=n_acq, samples_per_acquisition=lengths.pop(),
-            measurement=measurement_groups(n_acq), source=str(first["file"]),
-            reader=partial(_load_rows, tuple((r["file"], r["variable"], r["units"]) for r in rows)),
-        ))
+        recordings.append(
+            Recording(
+                dataset=name,
+                machine=machine,
+                speed=first["speed"],
+                condition=first["condition"],
+                severity=first["severity"],
+                run=run,
+                channel=channel,
+                recording_id=f"{run}/{channel}",
+                sampling_rate_hz=first["rate"],
+                units=first["units"],
+                n_acquisitions=n_acq,
+                samples_per_acquisition=lengths.pop(),
+                measurement=measurement_groups(n_acq),
+                source=str(first["file"]),
+                reader=partial(
+                    _load_rows, tuple((r["file"], r["variable"], r["units"]) for r in rows)
+                ),
+            )
+        )
     dataset = Dataset(name, recordings, skipped)
     if validate:
         dataset.validate()

@@ -33,8 +33,17 @@ __all__ = ["PAPER_SUBSETS", "NlnEmpDataset", "open_nln_emp", "parse_condition"]
 PAPER_SUBSETS: dict[str, tuple[str, tuple[str, ...]]] = {
     "Motor-4": (
         "70",
-        ("healthy", "unbalance motor", "unbalance pump", "align angular", "align parallel",
-         "align combination", "coupling", "cavitation suction", "cavitation discharge"),
+        (
+            "healthy",
+            "unbalance motor",
+            "unbalance pump",
+            "align angular",
+            "align parallel",
+            "align combination",
+            "coupling",
+            "cavitation suction",
+            "cavitation discharge",
+        ),
     ),
     "Motor-2": ("100", ("healthy", "impeller", "bearing bpfo", "bearing bpfi", "bearing pump")),
 }
@@ -106,8 +115,10 @@ def open_nln_emp(
     root = Path(path).expanduser()
     vib = root if root.name == "Vibration" else root / "Vibration"
     if not vib.is_dir():
-        raise SDTError(f"{root}: no 'Vibration' folder; expected the NLN-EMP layout "
-                       f"Vibration/Motor-<k>/<speed>/<condition>/...csv")
+        raise SDTError(
+            f"{root}: no 'Vibration' folder; expected the NLN-EMP layout "
+            f"Vibration/Motor-<k>/<speed>/<condition>/...csv"
+        )
     if max_acquisitions is not None and max_acquisitions < 1:
         raise SDTError(f"max_acquisitions must be >= 1, got {max_acquisitions}")
     store = ArrayCache(cache_dir, enabled=cache)
@@ -131,8 +142,18 @@ def open_nln_emp(
             if wanted_speeds is not None and speed_dir.name not in wanted_speeds:
                 continue
             for cond_dir in sorted(p for p in speed_dir.iterdir() if p.is_dir()):
-                _scan_condition(cond_dir, machine, speed_dir.name, classes, wanted_channels,
-                                max_acquisitions, store, name, recordings, skipped)
+                _scan_condition(
+                    cond_dir,
+                    machine,
+                    speed_dir.name,
+                    classes,
+                    wanted_channels,
+                    max_acquisitions,
+                    store,
+                    name,
+                    recordings,
+                    skipped,
+                )
     dataset = NlnEmpDataset(name, recordings, skipped)
     if validate:
         dataset.validate()
@@ -140,9 +161,16 @@ def open_nln_emp(
 
 
 def _scan_condition(
-    cond_dir: Path, machine: str, speed: str, classes: set[str], channels: set[str] | None,
-    max_acquisitions: int | None, store: ArrayCache, name: str,
-    recordings: list[Recording], skipped: list[Skipped],
+    cond_dir: Path,
+    machine: str,
+    speed: str,
+    classes: set[str],
+    channels: set[str] | None,
+    max_acquisitions: int | None,
+    store: ArrayCache,
+    name: str,
+    recordings: list[Recording],
+    skipped: list[Skipped],
 ) -> None:
     run = cond_dir.name
     try:
@@ -155,14 +183,23 @@ def _scan_condition(
     if condition not in classes and run not in classes:
         if condition in {c for m in PAPER_SUBSETS.values() for c in m[1]}:
             return  # a known class not selected for this machine: not an error, not listed
-        skipped.append(Skipped(str(cond_dir), f"condition {condition!r} not selected "
-                                              f"(known classes: {', '.join(sorted(classes))})"))
+        skipped.append(
+            Skipped(
+                str(cond_dir),
+                f"condition {condition!r} not selected "
+                f"(known classes: {', '.join(sorted(classes))})",
+            )
+        )
         return
     for file in sorted(cond_dir.iterdir()):
         match = _FILE.match(file.name)
         if not match or match["cond"] != run or match["machine"] != machine:
-            skipped.append(Skipped(str(file), "file name does not follow "
-                                              f"Vibration_{machine}_{speed}_time-{run}-ch<c>.csv"))
+            skipped.append(
+                Skipped(
+                    str(file),
+                    f"file name does not follow Vibration_{machine}_{speed}_time-{run}-ch<c>.csv",
+                )
+            )
             continue
         if channels is not None and match["ch"] not in channels:
             continue
@@ -174,13 +211,25 @@ def _scan_condition(
         n_acq = len(header.columns) - 1
         if max_acquisitions is not None:
             n_acq = min(n_acq, max_acquisitions)
-        recordings.append(Recording(
-            dataset=name, machine=machine, speed=speed, condition=condition, severity=severity,
-            run=run, channel=match["ch"], recording_id=f"{machine}/{speed}/{run}/{match['ch']}",
-            sampling_rate_hz=header.sampling_rate_hz, units="g", n_acquisitions=n_acq,
-            samples_per_acquisition=header.n_rows, measurement=measurement_groups(n_acq),
-            source=str(file), reader=partial(_read, file, store, header.time_step_s, n_acq),
-        ))
+        recordings.append(
+            Recording(
+                dataset=name,
+                machine=machine,
+                speed=speed,
+                condition=condition,
+                severity=severity,
+                run=run,
+                channel=match["ch"],
+                recording_id=f"{machine}/{speed}/{run}/{match['ch']}",
+                sampling_rate_hz=header.sampling_rate_hz,
+                units="g",
+                n_acquisitions=n_acq,
+                samples_per_acquisition=header.n_rows,
+                measurement=measurement_groups(n_acq),
+                source=str(file),
+                reader=partial(_read, file, store, header.time_step_s, n_acq),
+            )
+        )
 
 
 def _read(file: Path, store: ArrayCache, step: float, n_acq: int) -> np.ndarray:

@@ -74,8 +74,9 @@ def _write_csv(target: Path, data: np.ndarray, fs: float) -> None:
     header = ",".join(columns).encode() + b"\n"
     with atomic_path(target) as tmp, open(tmp, "wb") as handle:
         handle.write(header)
-        pacsv.write_csv(pa.table(columns), handle,
-                        write_options=pacsv.WriteOptions(include_header=False))
+        pacsv.write_csv(
+            pa.table(columns), handle, write_options=pacsv.WriteOptions(include_header=False)
+        )
 
 
 def write_nln_emp(dataset: Dataset, out: str | os.PathLike[str]) -> list[Path]:

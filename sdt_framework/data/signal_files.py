@@ -64,8 +64,9 @@ def _csv_columns(file: Path, variable: str | None) -> np.ndarray:
                 try:
                     float(value)
                 except (TypeError, ValueError):
-                    raise DataFileError(f"{file}: line {row + 2}, column {name!r}: "
-                                        f"{value!r} is not a number") from None
+                    raise DataFileError(
+                        f"{file}: line {row + 2}, column {name!r}: {value!r} is not a number"
+                    ) from None
         if column.null_count:
             row = int(np.flatnonzero(column.is_null().to_numpy(zero_copy_only=False))[0])
             raise DataFileError(f"{file}: line {row + 2}, column {name!r}: empty value")
@@ -119,6 +120,8 @@ def _finite(file: Path, data: np.ndarray, unit: str, offset: int) -> np.ndarray:
     bad = ~np.isfinite(data)
     if bad.any():
         acq, sample = np.argwhere(bad)[0]
-        raise DataFileError(f"{file}: acquisition {acq}, {unit} {sample + offset}: "
-                            f"non-finite value {data[acq, sample]!r}")
+        raise DataFileError(
+            f"{file}: acquisition {acq}, {unit} {sample + offset}: "
+            f"non-finite value {data[acq, sample]!r}"
+        )
     return data

@@ -71,14 +71,16 @@ def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatte
     return terms
 
 
-def _sources(machine: m.Machine, condition: str, level: int, run: str, acq: int, n: int,
-             seed: int, fs: float) -> dict:
+def _sources(
+    machine: m.Machine, condition: str, level: int, run: str, acq: int, n: int, seed: int, fs: float
+) -> dict:
     """Everything shared by the channels of one acquisition."""
     run_gen = rng(seed, machine.name, run, "run")
     speed = 1 + _clipped_normal(run_gen, m.SPEED_JITTER, 3)
     groups = ("motor_radial", "motor_axial", "pump_radial", "pump_axial", "impacts", "cavitation")
-    scatter = dict(zip(groups, np.exp(_clipped_normal(run_gen, m.AMPLITUDE_SCATTER, 2, 6)),
-                       strict=True))
+    scatter = dict(
+        zip(groups, np.exp(_clipped_normal(run_gen, m.AMPLITUDE_SCATTER, 2, 6)), strict=True)
+    )
     gen = rng(seed, machine.name, run, "acquisition", acq)
     f1 = machine.shaft_hz * speed * (1 + _clipped_normal(gen, 5e-4, 3))
     theta = gen.uniform(0, 2 * np.pi)  # shaft angle at the first sample
@@ -102,8 +104,12 @@ def _sources(machine: m.Machine, condition: str, level: int, run: str, acq: int,
         impacts[where] = _impulses(n, fs, times, amps)
     if condition == "coupling":
         times = (np.arange(int(2 * f1 * n / fs) + 2) + gen.uniform(0, 1)) / (2 * f1)
-        amps = m.COUPLING_IMPACT_G * level * scatter["impacts"] * (
-            1 + _clipped_normal(gen, 0.2, 3, times.size))
+        amps = (
+            m.COUPLING_IMPACT_G
+            * level
+            * scatter["impacts"]
+            * (1 + _clipped_normal(gen, 0.2, 3, times.size))
+        )
         impacts["coupling"] = _impulses(n, fs, times, amps)
     cavitation = np.zeros(n)
     if condition in m.CAVITATION:
@@ -137,9 +143,17 @@ def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float) -> np
     return result
 
 
-def generate_run(machine: str, condition: str, level: int, *, channels: tuple[str, ...],
-                 acquisitions: int, duration_s: float, seed: int, fs: float = FS_HZ,
-                 ) -> dict[str, np.ndarray]:
+def generate_run(
+    machine: str,
+    condition: str,
+    level: int,
+    *,
+    channels: tuple[str, ...],
+    acquisitions: int,
+    duration_s: float,
+    seed: int,
+    fs: float = FS_HZ,
+) -> dict[str, np.ndarray]:
     """Generate one run: channel -> float64 (acquisitions, round(duration_s * fs)) in g.
 
     Parameters

@@ -32,16 +32,26 @@ def _select(value: str | Iterable[str] | None, known: Iterable[str], what: str) 
     chosen = [value] if isinstance(value, str) else [str(v) for v in value]
     unknown = [v for v in chosen if v not in known]
     if unknown:
-        raise SDTError(f"synthetic-pump: unknown {what} {', '.join(map(repr, unknown))}; "
-                       f"available: {', '.join(known)}")
+        raise SDTError(
+            f"synthetic-pump: unknown {what} {', '.join(map(repr, unknown))}; "
+            f"available: {', '.join(known)}"
+        )
     return [k for k in known if k in chosen]
 
 
 class SyntheticPump(Dataset):
     """Generated NLN-EMP-like recordings (see :func:`open_synthetic`)."""
 
-    def __init__(self, *, seed: int, acquisitions: int, duration: float,
-                 machines: list[str], channels: list[str], conditions: list[str] | None) -> None:
+    def __init__(
+        self,
+        *,
+        seed: int,
+        acquisitions: int,
+        duration: float,
+        machines: list[str],
+        channels: list[str],
+        conditions: list[str] | None,
+    ) -> None:
         self.seed, self.acquisitions, self.duration = seed, acquisitions, duration
         self.channels = tuple(channels)
         self._last: tuple[tuple[str, str], dict[str, np.ndarray]] | None = None
@@ -55,25 +65,43 @@ class SyntheticPump(Dataset):
                 for level in range(1, levels + 1):
                     run = f"{condition} {level}"
                     for ch in channels:
-                        recordings.append(Recording(
-                            dataset="synthetic-pump", machine=name, speed=machine.speed,
-                            condition=condition,
-                            severity=None if condition == "healthy" else level, run=run,
-                            channel=ch, recording_id=f"{name}/{machine.speed}/{run}/{ch}",
-                            sampling_rate_hz=FS_HZ, units="g", n_acquisitions=acquisitions,
-                            samples_per_acquisition=n, measurement=measurement_groups(acquisitions),
-                            source="synthetic",
-                            reader=partial(self._generate, name, condition, level, ch),
-                        ))
+                        recordings.append(
+                            Recording(
+                                dataset="synthetic-pump",
+                                machine=name,
+                                speed=machine.speed,
+                                condition=condition,
+                                severity=None if condition == "healthy" else level,
+                                run=run,
+                                channel=ch,
+                                recording_id=f"{name}/{machine.speed}/{run}/{ch}",
+                                sampling_rate_hz=FS_HZ,
+                                units="g",
+                                n_acquisitions=acquisitions,
+                                samples_per_acquisition=n,
+                                measurement=measurement_groups(acquisitions),
+                                source="synthetic",
+                                reader=partial(self._generate, name, condition, level, ch),
+                            )
+                        )
         super().__init__("synthetic-pump", recordings, [])
 
     def _generate(self, machine: str, condition: str, level: int, channel: str) -> np.ndarray:
         key = (machine, f"{condition} {level}")
         if self._last is None or self._last[0] != key:
             self._last = None  # free the previous run before generating the next
-            self._last = (key, generate_run(
-                machine, condition, level, channels=self.channels,
-                acquisitions=self.acquisitions, duration_s=self.duration, seed=self.seed))
+            self._last = (
+                key,
+                generate_run(
+                    machine,
+                    condition,
+                    level,
+                    channels=self.channels,
+                    acquisitions=self.acquisitions,
+                    duration_s=self.duration,
+                    seed=self.seed,
+                ),
+            )
         return self._last[1][channel]
 
 
@@ -106,10 +134,14 @@ def open_synthetic(
         raise SDTError(f"synthetic-pump: duration must be > 0.2 s, got {duration}")
     chosen_machines = _select(machines, m.MACHINES, "machine")
     known_conditions = {c for name in chosen_machines for c, _ in m.MACHINES[name].conditions}
-    chosen_conditions = None if conditions is None else _select(
-        conditions, sorted(known_conditions), "condition")
+    chosen_conditions = (
+        None if conditions is None else _select(conditions, sorted(known_conditions), "condition")
+    )
     return SyntheticPump(
-        seed=int(seed), acquisitions=int(acquisitions), duration=float(duration),
-        machines=chosen_machines, channels=_select(channels, m.CHANNELS, "channel"),
+        seed=int(seed),
+        acquisitions=int(acquisitions),
+        duration=float(duration),
+        machines=chosen_machines,
+        channels=_select(channels, m.CHANNELS, "channel"),
         conditions=chosen_conditions,
     )

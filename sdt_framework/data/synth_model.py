@@ -73,15 +73,34 @@ class Machine:
 
 
 MACHINES: dict[str, Machine] = {
-    "Motor-4": Machine("Motor-4", "70", 0.7 * RATED_RPM, (
-        ("healthy", 3), ("unbalance motor", 6), ("unbalance pump", 3), ("align angular", 5),
-        ("align parallel", 4), ("align combination", 4), ("coupling", 3),
-        ("cavitation suction", 4), ("cavitation discharge", 5),
-    )),
-    "Motor-2": Machine("Motor-2", "100", RATED_RPM, (
-        ("healthy", 3), ("impeller", 3), ("bearing bpfo", 3), ("bearing bpfi", 3),
-        ("bearing pump", 3),
-    )),
+    "Motor-4": Machine(
+        "Motor-4",
+        "70",
+        0.7 * RATED_RPM,
+        (
+            ("healthy", 3),
+            ("unbalance motor", 6),
+            ("unbalance pump", 3),
+            ("align angular", 5),
+            ("align parallel", 4),
+            ("align combination", 4),
+            ("coupling", 3),
+            ("cavitation suction", 4),
+            ("cavitation discharge", 5),
+        ),
+    ),
+    "Motor-2": Machine(
+        "Motor-2",
+        "100",
+        RATED_RPM,
+        (
+            ("healthy", 3),
+            ("impeller", 3),
+            ("bearing bpfo", 3),
+            ("bearing bpfi", 3),
+            ("bearing pump", 3),
+        ),
+    ),
 }
 
 
@@ -106,59 +125,95 @@ class ChannelPath:
 
 CHANNELS: dict[str, ChannelPath] = {
     "ch1": ChannelPath(
-        "ch1", "motor non-drive-end horizontal",
+        "ch1",
+        "motor non-drive-end horizontal",
         {"motor_radial": 1.0, "motor_axial": 0.15, "pump_radial": 0.3, "pump_axial": 0.05},
         ((2900.0, 0.04, 1.0), (6800.0, 0.05, 0.5)),
-        {"motor_bearing": 0.6, "pump_bearing": 0.15, "coupling": 0.5}, 0.8,
+        {"motor_bearing": 0.6, "pump_bearing": 0.15, "coupling": 0.5},
+        0.8,
     ),
     "ch2": ChannelPath(
-        "ch2", "motor drive-end vertical",
+        "ch2",
+        "motor drive-end vertical",
         {"motor_radial": 0.9j, "motor_axial": 0.15, "pump_radial": 0.45j, "pump_axial": 0.05},
         ((3600.0, 0.035, 1.0), (5200.0, 0.05, 0.6)),
-        {"motor_bearing": 1.0, "pump_bearing": 0.25, "coupling": 1.0}, 0.7,
+        {"motor_bearing": 1.0, "pump_bearing": 0.25, "coupling": 1.0},
+        0.7,
     ),
     "ch3": ChannelPath(
-        "ch3", "motor drive-end axial",
+        "ch3",
+        "motor drive-end axial",
         {"motor_radial": 0.25, "motor_axial": 1.0, "pump_radial": 0.1, "pump_axial": 0.4},
         ((2400.0, 0.04, 1.0), (7400.0, 0.05, 0.4)),
-        {"motor_bearing": 0.7, "pump_bearing": 0.2, "coupling": 0.7}, 0.6,
+        {"motor_bearing": 0.7, "pump_bearing": 0.2, "coupling": 0.7},
+        0.6,
     ),
     "ch4": ChannelPath(
-        "ch4", "pump drive-end horizontal",
+        "ch4",
+        "pump drive-end horizontal",
         {"motor_radial": 0.4, "motor_axial": 0.05, "pump_radial": 1.0, "pump_axial": 0.15},
         ((4300.0, 0.04, 1.0), (6100.0, 0.045, 0.6)),
-        {"motor_bearing": 0.2, "pump_bearing": 1.0, "coupling": 0.9}, 1.0,
+        {"motor_bearing": 0.2, "pump_bearing": 1.0, "coupling": 0.9},
+        1.0,
     ),
     "ch5": ChannelPath(
-        "ch5", "pump non-drive-end vertical",
+        "ch5",
+        "pump non-drive-end vertical",
         {"motor_radial": 0.25j, "motor_axial": 0.05, "pump_radial": 0.9j, "pump_axial": 0.15},
         ((3200.0, 0.035, 1.0), (8200.0, 0.05, 0.4)),
-        {"motor_bearing": 0.15, "pump_bearing": 0.8, "coupling": 0.4}, 0.9,
+        {"motor_bearing": 0.15, "pump_bearing": 0.8, "coupling": 0.4},
+        0.9,
     ),
 }
 
 #: healthy baseline harmonics: (group, shaft order, amplitude g)
 BASELINE: tuple[tuple[str, float, float], ...] = (
-    ("motor_radial", 1, 0.04), ("motor_radial", 2, 0.015), ("motor_radial", 3, 0.006),
-    ("pump_radial", 1, 0.035), ("pump_radial", VANES, 0.06), ("pump_radial", 2 * VANES, 0.02),
-    ("motor_axial", 1, 0.015), ("pump_axial", 1, 0.012), ("pump_axial", VANES, 0.02),
+    ("motor_radial", 1, 0.04),
+    ("motor_radial", 2, 0.015),
+    ("motor_radial", 3, 0.006),
+    ("pump_radial", 1, 0.035),
+    ("pump_radial", VANES, 0.06),
+    ("pump_radial", 2 * VANES, 0.02),
+    ("motor_axial", 1, 0.015),
+    ("pump_axial", 1, 0.012),
+    ("pump_axial", VANES, 0.02),
 )
 
 #: fault harmonics added per severity level: class -> (group, order, g per level)
 FAULT_HARMONICS: dict[str, tuple[tuple[str, float, float], ...]] = {
     "unbalance motor": (("motor_radial", 1, 0.08),),
     "unbalance pump": (("pump_radial", 1, 0.10),),
-    "align parallel": (("motor_radial", 2, 0.06), ("pump_radial", 2, 0.05),
-                       ("motor_radial", 1, 0.02), ("motor_axial", 2, 0.01)),
-    "align angular": (("motor_axial", 1, 0.07), ("pump_axial", 1, 0.05),
-                      ("motor_axial", 2, 0.04), ("motor_radial", 1, 0.015)),
-    "align combination": (("motor_radial", 2, 0.042), ("pump_radial", 2, 0.035),
-                          ("motor_axial", 1, 0.05), ("pump_axial", 1, 0.035),
-                          ("motor_axial", 2, 0.028), ("motor_radial", 1, 0.025)),
-    "coupling": (("motor_radial", 1, 0.02), ("motor_radial", 2, 0.03),
-                 ("motor_radial", 3, 0.025), ("pump_radial", 3, 0.015)),
-    "impeller": (("pump_radial", VANES, 0.08), ("pump_radial", 2 * VANES, 0.03),
-                 ("pump_radial", 1, 0.03)),
+    "align parallel": (
+        ("motor_radial", 2, 0.06),
+        ("pump_radial", 2, 0.05),
+        ("motor_radial", 1, 0.02),
+        ("motor_axial", 2, 0.01),
+    ),
+    "align angular": (
+        ("motor_axial", 1, 0.07),
+        ("pump_axial", 1, 0.05),
+        ("motor_axial", 2, 0.04),
+        ("motor_radial", 1, 0.015),
+    ),
+    "align combination": (
+        ("motor_radial", 2, 0.042),
+        ("pump_radial", 2, 0.035),
+        ("motor_axial", 1, 0.05),
+        ("pump_axial", 1, 0.035),
+        ("motor_axial", 2, 0.028),
+        ("motor_radial", 1, 0.025),
+    ),
+    "coupling": (
+        ("motor_radial", 1, 0.02),
+        ("motor_radial", 2, 0.03),
+        ("motor_radial", 3, 0.025),
+        ("pump_radial", 3, 0.015),
+    ),
+    "impeller": (
+        ("pump_radial", VANES, 0.08),
+        ("pump_radial", 2 * VANES, 0.03),
+        ("pump_radial", 1, 0.03),
+    ),
     "bearing pump": (("pump_radial", 1, 0.02),),
 }
 

@@ -98,8 +98,10 @@ def write_feature_table(table: FeatureTable, path: str | os.PathLike[str]) -> Pa
     frame = table.to_frame()
     with atomic_path(path) as tmp:
         if suffix == ".csv":
-            frame.columns = [*_INDEX, *(f"{n}[{u}]" for n, u in zip(table.names, table.units,
-                                                                       strict=True))]
+            frame.columns = [
+                *_INDEX,
+                *(f"{n}[{u}]" for n, u in zip(table.names, table.units, strict=True)),
+            ]
             frame.to_csv(tmp, index=False, float_format="%.9g")
         else:
             import pyarrow as pa
@@ -108,7 +110,8 @@ def write_feature_table(table: FeatureTable, path: str | os.PathLike[str]) -> Pa
             arrow = pa.Table.from_pandas(frame, preserve_index=False)
             fields = [
                 f.with_metadata({"unit": table.units[table.names.index(f.name)]})
-                if f.name in table.names else f
+                if f.name in table.names
+                else f
                 for f in arrow.schema
             ]
             schema = pa.schema(fields, metadata={_META: json.dumps(table.metadata())})

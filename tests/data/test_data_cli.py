@@ -12,24 +12,50 @@ import numpy as np
 from sdt_framework.data import open_nln_emp, open_synthetic
 
 CLASSES = {
-    "Motor-4": {"healthy": 3, "unbalance motor": 6, "unbalance pump": 3, "align angular": 5,
-                "align parallel": 4, "align combination": 4, "coupling": 3,
-                "cavitation suction": 4, "cavitation discharge": 5},
-    "Motor-2": {"healthy": 3, "impeller": 3, "bearing bpfo": 3, "bearing bpfi": 3,
-                "bearing pump": 3},
+    "Motor-4": {
+        "healthy": 3,
+        "unbalance motor": 6,
+        "unbalance pump": 3,
+        "align angular": 5,
+        "align parallel": 4,
+        "align combination": 4,
+        "coupling": 3,
+        "cavitation suction": 4,
+        "cavitation discharge": 5,
+    },
+    "Motor-2": {
+        "healthy": 3,
+        "impeller": 3,
+        "bearing bpfo": 3,
+        "bearing bpfi": 3,
+        "bearing pump": 3,
+    },
 }
 
 
 def sdt(*args: str, env_cache: Path) -> subprocess.CompletedProcess:
     code = "from sdt_framework.cli.main import main; main()"
-    return subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True,
-                          env={"SDT_CACHE_DIR": str(env_cache), "PATH": "/usr/bin:/bin"})
+    return subprocess.run(
+        [sys.executable, "-c", code, *args],
+        capture_output=True,
+        text=True,
+        env={"SDT_CACHE_DIR": str(env_cache), "PATH": "/usr/bin:/bin"},
+    )
 
 
 def test_synth_then_inspect_round_trip(tmp_path: Path) -> None:
     out = tmp_path / "syn"
-    done = sdt("dataset", "synth", "--out", str(out), "--duration", "0.5", "--seed", "2",
-               env_cache=tmp_path / "cache")
+    done = sdt(
+        "dataset",
+        "synth",
+        "--out",
+        str(out),
+        "--duration",
+        "0.5",
+        "--seed",
+        "2",
+        env_cache=tmp_path / "cache",
+    )
     assert done.returncode == 0, done.stderr
     shown = sdt("dataset", "inspect", str(out), "--json", env_cache=tmp_path / "cache")
     assert shown.returncode == 0, shown.stderr
@@ -46,8 +72,11 @@ def test_synth_then_inspect_round_trip(tmp_path: Path) -> None:
     # the files hold the generated signal to 6 significant digits
     ds = open_nln_emp(out, conditions="cavitation suction", channels="ch1", cache=False)
     rec = next(r for r in ds.recordings() if r.run == "cavitation suction 4")
-    ref = next(r for r in open_synthetic(seed=2, duration=0.5).recordings()
-               if r.recording_id == rec.recording_id)
+    ref = next(
+        r
+        for r in open_synthetic(seed=2, duration=0.5).recordings()
+        if r.recording_id == rec.recording_id
+    )
     np.testing.assert_allclose(rec.load(), ref.load(), rtol=1e-5, atol=1e-9)
 
 

@@ -23,7 +23,8 @@ def folder(tmp_path: Path) -> Path:
     np.save(sig / "b.npy", np.ones((2, 100)))
     scipy.io.savemat(sig / "c.mat", {"acc": np.full((100, 3), 2.0), "other": np.zeros(3)})
     pd.DataFrame({"time": np.arange(100) / 1000, "x": np.full(100, 9.80665)}).to_csv(
-        sig / "d.csv", index=False)
+        sig / "d.csv", index=False
+    )
     return tmp_path
 
 
@@ -34,12 +35,15 @@ def write(folder: Path, rows: list[str], header: str = HEADER) -> Path:
 
 
 def test_formats_units_and_grouping(folder: Path) -> None:
-    manifest = write(folder, [
-        "signals/a.npy,1000,healthy,,run-1,x,rig,mg,",
-        "signals/b.npy,1000,healthy,,run-1,x,rig,mg,",
-        "signals/c.mat,1000,bearing,2,run-2,y,rig,g,acc",
-        f"{folder / 'signals' / 'd.csv'},1000,bearing,2,run-2,z,rig,m/s^2,x",
-    ])
+    manifest = write(
+        folder,
+        [
+            "signals/a.npy,1000,healthy,,run-1,x,rig,mg,",
+            "signals/b.npy,1000,healthy,,run-1,x,rig,mg,",
+            "signals/c.mat,1000,bearing,2,run-2,y,rig,g,acc",
+            f"{folder / 'signals' / 'd.csv'},1000,bearing,2,run-2,z,rig,m/s^2,x",
+        ],
+    )
     ds = open_manifest(manifest)
     recs = {r.recording_id: r for r in ds.recordings()}
     assert set(recs) == {"run-1/x", "run-2/y", "run-2/z"}
@@ -56,10 +60,13 @@ def test_formats_units_and_grouping(folder: Path) -> None:
 
 
 def test_missing_file_is_skipped_with_row(folder: Path) -> None:
-    manifest = write(folder, [
-        "signals/a.npy,1000,healthy,,run-1,x,rig,g,",
-        "signals/gone.npy,1000,healthy,,run-2,x,rig,g,",
-    ])
+    manifest = write(
+        folder,
+        [
+            "signals/a.npy,1000,healthy,,run-1,x,rig,g,",
+            "signals/gone.npy,1000,healthy,,run-2,x,rig,g,",
+        ],
+    )
     ds = open_manifest(manifest)
     assert [r.run for r in ds.recordings()] == ["run-1"]
     (skip,) = ds.skipped
@@ -71,10 +78,13 @@ def test_non_finite_value_reported_and_others_load(folder: Path) -> None:
     values = np.zeros(100)
     values[42] = np.nan
     np.save(folder / "signals" / "nan.npy", values)
-    manifest = write(folder, [
-        "signals/nan.npy,1000,healthy,,run-1,x,rig,g,",
-        "signals/a.npy,1000,healthy,,run-2,x,rig,g,",
-    ])
+    manifest = write(
+        folder,
+        [
+            "signals/nan.npy,1000,healthy,,run-1,x,rig,g,",
+            "signals/a.npy,1000,healthy,,run-2,x,rig,g,",
+        ],
+    )
     ds = open_manifest(manifest, validate=True)
     assert [r.run for r in ds.recordings()] == ["run-2"]
     (skip,) = ds.skipped
@@ -98,9 +108,20 @@ def test_bad_fields_are_user_errors(folder: Path, header: str, row: str, field: 
 
 def test_parquet_manifest(folder: Path) -> None:
     path = folder / "m.parquet"
-    pd.DataFrame({"path": ["signals/a.npy"], "sampling_rate_hz": [1000.0],
-                  "condition": ["healthy"], "severity": [None], "recording_id": ["r1"],
-                  "channel": ["x"]}).to_parquet(path)
+    pd.DataFrame(
+        {
+            "path": ["signals/a.npy"],
+            "sampling_rate_hz": [1000.0],
+            "condition": ["healthy"],
+            "severity": [None],
+            "recording_id": ["r1"],
+            "channel": ["x"],
+        }
+    ).to_parquet(path)
     (rec,) = open_manifest(path).recordings()
-    assert (rec.machine, rec.units, rec.severity, rec.sampling_rate_hz) == ("machine", "g", None,
-                                                                           1000.0)
+    assert (rec.machine, rec.units, rec.severity, rec.sampling_rate_hz) == (
+        "machine",
+        "g",
+        None,
+        1000.0,
+    )

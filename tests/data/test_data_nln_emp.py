@@ -33,10 +33,15 @@ def signal(seed: int, n_acq: int = 7, n: int = 300) -> np.ndarray:
 
 @pytest.fixture
 def tree(tmp_path: Path) -> Path:
-    runs = [("Motor-4", "70", "align angular 3"), ("Motor-4", "70", "healthy 2"),
-            ("Motor-4", "70", "coupling 2D"), ("Motor-4", "70", "healthy noise"),
-            ("Motor-4", "50", "healthy 1"), ("Motor-2", "100", "bearing bpfo 1"),
-            ("Motor-2", "100", "align angular 1")]
+    runs = [
+        ("Motor-4", "70", "align angular 3"),
+        ("Motor-4", "70", "healthy 2"),
+        ("Motor-4", "70", "coupling 2D"),
+        ("Motor-4", "70", "healthy noise"),
+        ("Motor-4", "50", "healthy 1"),
+        ("Motor-2", "100", "bearing bpfo 1"),
+        ("Motor-2", "100", "align angular 1"),
+    ]
     for i, (machine, speed, run) in enumerate(runs):
         for ch in ("ch1", "ch3"):
             write_csv(tmp_path, machine, speed, run, ch, signal(i))
@@ -54,8 +59,11 @@ def test_discovery_defaults_to_paper_subsets(tree: Path, tmp_path: Path) -> None
     ds = open_nln_emp(tree, cache_dir=tmp_path / "cache")
     runs = {(r.machine, r.speed, r.run) for r in ds.recordings()}
     # Motor-4 at 50 % and Motor-2 'align angular' are not in the paper subsets
-    assert runs == {("Motor-4", "70", "align angular 3"), ("Motor-4", "70", "healthy 2"),
-                    ("Motor-2", "100", "bearing bpfo 1")}
+    assert runs == {
+        ("Motor-4", "70", "align angular 3"),
+        ("Motor-4", "70", "healthy 2"),
+        ("Motor-2", "100", "bearing bpfo 1"),
+    }
     rec = next(r for r in ds.recordings() if r.run == "healthy 2" and r.channel == "ch3")
     assert (rec.condition, rec.severity) == ("healthy", None)
     assert rec.recording_id == "Motor-4/70/healthy 2/ch3"
@@ -72,8 +80,14 @@ def test_discovery_defaults_to_paper_subsets(tree: Path, tmp_path: Path) -> None
 
 
 def test_values_and_subset_options(tree: Path, tmp_path: Path) -> None:
-    ds = open_nln_emp(tree, motors=["Motor-4"], speeds="50", channels="ch3",
-                      max_acquisitions=2, cache_dir=tmp_path / "cache")
+    ds = open_nln_emp(
+        tree,
+        motors=["Motor-4"],
+        speeds="50",
+        channels="ch3",
+        max_acquisitions=2,
+        cache_dir=tmp_path / "cache",
+    )
     (rec,) = ds.recordings()
     assert (rec.run, rec.channel, rec.n_acquisitions) == ("healthy 1", "ch3", 2)
     data = rec.load()
@@ -115,10 +129,16 @@ def test_cache_hit_and_invalidation(tree: Path, tmp_path: Path, monkeypatch) -> 
         (lambda lines: lines.__setitem__(40, lines[40].rsplit(",", 1)[0]), "line 41: expected 8"),
         (lambda lines: lines.__setitem__(12, lines[12] + "x"), "line 13, column '6'"),
         (lambda lines: lines.__setitem__(0, "t,0,1,2,3,4,5,6"), "line 1: header"),
-        (lambda lines: lines.__setitem__(77, lines[77].replace(",", ",inf,", 1).rsplit(",", 1)[0]),
-         "line 78, column '0': non-finite"),
-        (lambda lines: lines.__setitem__(30, lines[30].replace(",", ",,", 1).rsplit(",", 1)[0]),
-         "line 31, column '0': empty value"),
+        (
+            lambda lines: lines.__setitem__(
+                77, lines[77].replace(",", ",inf,", 1).rsplit(",", 1)[0]
+            ),
+            "line 78, column '0': non-finite",
+        ),
+        (
+            lambda lines: lines.__setitem__(30, lines[30].replace(",", ",,", 1).rsplit(",", 1)[0]),
+            "line 31, column '0': empty value",
+        ),
     ],
 )
 def test_malformed_file_is_skipped_and_others_load(tree: Path, mutate, expected: str) -> None:

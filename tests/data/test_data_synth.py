@@ -55,10 +55,13 @@ def test_default_dataset_shape_without_generating() -> None:
     assert {r.severity for r in recs if r.condition == "healthy"} == {None}
 
 
-@pytest.mark.parametrize(("run", "multiplier"), [
-    ("bearing bpfo 2", 9 / 2 * (1 - 9.525 / 46.0)),  # 6206: 9 balls, d 9.525 mm, D 46 mm
-    ("bearing bpfi 2", 9 / 2 * (1 + 9.525 / 46.0)),
-])
+@pytest.mark.parametrize(
+    ("run", "multiplier"),
+    [
+        ("bearing bpfo 2", 9 / 2 * (1 - 9.525 / 46.0)),  # 6206: 9 balls, d 9.525 mm, D 46 mm
+        ("bearing bpfi 2", 9 / 2 * (1 + 9.525 / 46.0)),
+    ],
+)
 def test_bearing_envelope_spectrum_peaks_at_defect_frequency(run: str, multiplier: float) -> None:
     x = load("Motor-2", run, "ch2", duration=4.0)
     expected = multiplier * SHAFT["Motor-2"]
@@ -66,20 +69,25 @@ def test_bearing_envelope_spectrum_peaks_at_defect_frequency(run: str, multiplie
 
 
 def test_unbalance_1x_rises_with_severity() -> None:
-    ds = open_synthetic(duration=2.0, machines="Motor-4", conditions="unbalance motor",
-                        channels="ch1")
+    ds = open_synthetic(
+        duration=2.0, machines="Motor-4", conditions="unbalance motor", channels="ch1"
+    )
     amps = [amplitude_near(r.load()[0], SHAFT["Motor-4"]) for r in ds.recordings()]
     assert len(amps) == 6 and all(b > a for a, b in itertools.pairwise(amps)), amps
     pump = open_synthetic(duration=2.0, machines="Motor-4", conditions="unbalance pump")
-    by_ch = {r.channel: amplitude_near(r.load()[0], SHAFT["Motor-4"])
-             for r in pump.recordings() if r.run == "unbalance pump 3"}
+    by_ch = {
+        r.channel: amplitude_near(r.load()[0], SHAFT["Motor-4"])
+        for r in pump.recordings()
+        if r.run == "unbalance pump 3"
+    }
     assert by_ch["ch4"] > 2 * by_ch["ch1"]  # pump unbalance is strongest on pump bearings
 
 
 def test_angular_misalignment_is_axial() -> None:
     ds = open_synthetic(duration=2.0, machines="Motor-4", conditions="align angular")
-    ones = {(r.run, r.channel): amplitude_near(r.load()[0], SHAFT["Motor-4"])
-            for r in ds.recordings()}
+    ones = {
+        (r.run, r.channel): amplitude_near(r.load()[0], SHAFT["Motor-4"]) for r in ds.recordings()
+    }
     for level in range(1, 6):
         run = f"align angular {level}"
         assert ones[(run, "ch3")] > max(ones[(run, "ch1")], ones[(run, "ch2")])
@@ -108,7 +116,15 @@ def test_channels_are_views_of_one_event() -> None:
     ds = open_synthetic(duration=1.0, machines="Motor-4", conditions="coupling")
     x = {r.channel: r.load()[0] for r in ds.recordings() if r.run == "coupling 3"}
     # the same coupling impacts reach ch2 and ch4: their envelopes are strongly correlated
-    env = {c: np.abs(signal.hilbert(signal.sosfiltfilt(
-        signal.butter(4, [2000, 8000], "bandpass", fs=FS, output="sos"), v))) for c, v in x.items()}
+    env = {
+        c: np.abs(
+            signal.hilbert(
+                signal.sosfiltfilt(
+                    signal.butter(4, [2000, 8000], "bandpass", fs=FS, output="sos"), v
+                )
+            )
+        )
+        for c, v in x.items()
+    }
     assert np.corrcoef(env["ch2"], env["ch4"])[0, 1] > 0.5
     assert not np.allclose(x["ch2"], x["ch4"])

@@ -48,8 +48,9 @@ def invoke(*args: str) -> Result:
 def test_round_trip_keeps_values_units_and_indices(signal, tmp_path: Path, suffix: str) -> None:
     path, x = signal
     out = tmp_path / "sub" / f"features{suffix}"
-    result = invoke("features", "extract", str(path), "--fs", "3200", "--set", "paper8+p2p",
-                    "--out", str(out))
+    result = invoke(
+        "features", "extract", str(path), "--fs", "3200", "--set", "paper8+p2p", "--out", str(out)
+    )
     assert result.exit_code == 0, result.output
     assert "wrote 6 windows x 9 features (paper8+p2p" in result.stdout
     back = read_feature_table(out)
@@ -64,23 +65,45 @@ def test_round_trip_keeps_values_units_and_indices(signal, tmp_path: Path, suffi
 
 def test_csv_headers_carry_units(signal, tmp_path: Path) -> None:
     out = tmp_path / "f.csv"
-    assert invoke("features", "extract", str(signal[0]), "--fs", "3200", "--out", str(out)
-                  ).exit_code == 0
+    assert (
+        invoke("features", "extract", str(signal[0]), "--fs", "3200", "--out", str(out)).exit_code
+        == 0
+    )
     header = out.read_text().splitlines()[0]
-    assert header == ("acquisition,window,sigma[g],S[1],K[1],CF[1],A_RMS[g],A_Peak[g],"
-                      "V_RMS[mm/s],D_RMS[um]")
+    assert header == (
+        "acquisition,window,sigma[g],S[1],K[1],CF[1],A_RMS[g],A_Peak[g],V_RMS[mm/s],D_RMS[um]"
+    )
 
 
 def test_parquet_field_and_schema_metadata(signal, tmp_path: Path) -> None:
     out = tmp_path / "f.parquet"
-    assert invoke("features", "extract", str(signal[0]), "--fs", "3200", "--window-s", "0.32",
-                  "--settle-s", "0", "--out", str(out)).exit_code == 0
+    assert (
+        invoke(
+            "features",
+            "extract",
+            str(signal[0]),
+            "--fs",
+            "3200",
+            "--window-s",
+            "0.32",
+            "--settle-s",
+            "0",
+            "--out",
+            str(out),
+        ).exit_code
+        == 0
+    )
     schema = pq.read_schema(out)
     assert schema.field("V_RMS").metadata[b"unit"] == b"mm/s"
     assert str(schema.field("V_RMS").type) == "float"
     meta = json.loads(schema.metadata[b"sdt_framework.features"])
-    assert meta | {"units": None} == {"feature_set": "paper8", "fs": 3200.0,
-                                      "window_length": 1024, "settle": 0, "units": None}
+    assert meta | {"units": None} == {
+        "feature_set": "paper8",
+        "fs": 3200.0,
+        "window_length": 1024,
+        "settle": 0,
+        "units": None,
+    }
     assert pq.read_table(out).num_rows == 2 * 6
 
 
@@ -96,8 +119,9 @@ def test_user_errors_are_sdt_errors(signal, tmp_path: Path, args: list[str], mes
     suffix = args[1] if args[0] == "--out-suffix" else ".csv"
     extra = [] if args[0] == "--out-suffix" else args
     out = tmp_path / f"f{suffix}"
-    result = invoke("features", "extract", str(signal[0]), "--fs", "3200", "--out", str(out),
-                    *extra)
+    result = invoke(
+        "features", "extract", str(signal[0]), "--fs", "3200", "--out", str(out), *extra
+    )
     assert isinstance(result.exception, SDTError) and message in str(result.exception)
     assert not out.exists()
 
@@ -108,8 +132,11 @@ def test_main_prints_one_line_and_exits_2(
     bad = tmp_path / "x.npy"
     np.save(bad, np.zeros((2, 2, 2)))
     monkeypatch.setenv("SDT_PLUGINS", "paper8")  # only the built-in feature plugin
-    monkeypatch.setattr(sys, "argv", ["sdt", "features", "extract", str(bad), "--fs", "3200",
-                                      "--out", str(tmp_path / "o.csv")])
+    monkeypatch.setattr(
+        sys,
+        "argv",
+        ["sdt", "features", "extract", str(bad), "--fs", "3200", "--out", str(tmp_path / "o.csv")],
+    )
     with pytest.raises(SystemExit) as info:
         main()
     assert info.value.code == 2

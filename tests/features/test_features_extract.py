@@ -16,8 +16,9 @@ SIGNAL = np.random.default_rng(0).normal(size=(2, 320 + 3 * 2048))
 
 
 def spec(compute: Callable[..., object], names: tuple[str, ...] = ("a", "b")) -> FeatureSetSpec:
-    return FeatureSetSpec(name="probe", feature_names=names, units=("g",) * len(names),
-                          compute=compute)
+    return FeatureSetSpec(
+        name="probe", feature_names=names, units=("g",) * len(names), compute=compute
+    )
 
 
 def test_windows_reach_compute_centred_in_float64_and_table_has_indices() -> None:

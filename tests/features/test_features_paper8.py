@@ -26,8 +26,8 @@ def sine(fs: float, f: float, a: float, seconds: float = 3.0, offset: float = 0.
 
 # fs / f is an integer >= 5, so every window samples the crest exactly and cos^4 averages to 3/8
 @pytest.mark.parametrize(
-    ("fs", "f"), [(3200, 50.0), (3200, 200.0), (4000, 100.0), (4000, 500.0), (20000, 250.0),
-                  (20000, 1000.0)]
+    ("fs", "f"),
+    [(3200, 50.0), (3200, 200.0), (4000, 100.0), (4000, 500.0), (20000, 250.0), (20000, 1000.0)],
 )
 def test_sine_matches_closed_form(fs: float, f: float) -> None:
     a = 0.7
@@ -76,8 +76,12 @@ def test_statistics_agree_with_scipy_on_an_impulsive_signal() -> None:
     table = extract(x, 20000, PAPER8)
     window = x[2000 + 12800 :]
     w = window - window.mean()
-    reference = [np.std(w), scipy.stats.skew(w), scipy.stats.kurtosis(w, fisher=False),
-                 np.max(np.abs(w)) / np.sqrt(np.mean(w**2))]
+    reference = [
+        np.std(w),
+        scipy.stats.skew(w),
+        scipy.stats.kurtosis(w, fisher=False),
+        np.max(np.abs(w)) / np.sqrt(np.mean(w**2)),
+    ]
     np.testing.assert_allclose(table.values[1, :4], reference, rtol=1e-5)
 
 

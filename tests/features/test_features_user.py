@@ -31,7 +31,9 @@ def test_decorator_makes_a_one_feature_spec_and_keeps_the_function() -> None:
     assert isinstance(peak_to_peak, Feature)
     spec = peak_to_peak.spec
     assert (spec.name, spec.feature_names, spec.units) == (
-        "peak_to_peak", ("peak_to_peak",), ("g",)
+        "peak_to_peak",
+        ("peak_to_peak",),
+        ("g",),
     )
     assert spec.bytes_per_window == 4 and spec.description == "max - min"
     np.testing.assert_array_equal(peak_to_peak(np.array([[1.0, 3.0]]), 1.0), [2.0])
@@ -86,8 +88,14 @@ def test_composition_concatenates_columns_units_and_payload() -> None:
 
 def test_duplicate_feature_names_across_parts_are_an_error() -> None:
     registry = fresh_registry()
-    registry.add(FeatureSetSpec(name="my-stats", feature_names=("rms", "K"), units=("g", "1"),
-                                compute=lambda w, fs: np.zeros((len(w), 2))))
+    registry.add(
+        FeatureSetSpec(
+            name="my-stats",
+            feature_names=("rms", "K"),
+            units=("g", "1"),
+            compute=lambda w, fs: np.zeros((len(w), 2)),
+        )
+    )
     with pytest.raises(SDTError, match=r"feature 'K' is provided by both 'paper8' and 'my-stats'"):
         resolve_feature_set(registry, "paper8+my-stats")
     with pytest.raises(SDTError, match="provided by both"):

@@ -9,8 +9,9 @@ from sdt_framework.errors import SDTError
 from sdt_framework.features import cut_windows
 
 
-@pytest.mark.parametrize(("fs", "length", "settle"), [(3200, 2048, 320), (4000, 2560, 400),
-                                                      (20000, 12800, 2000)])
+@pytest.mark.parametrize(
+    ("fs", "length", "settle"), [(3200, 2048, 320), (4000, 2560, 400), (20000, 12800, 2000)]
+)
 def test_twelve_second_acquisition_gives_18_windows(fs: int, length: int, settle: int) -> None:
     # floor((12 - 0.1) / 0.64) = 18 at every rate of the paper
     cut = cut_windows(np.zeros(12 * fs), fs)
