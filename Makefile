@@ -28,6 +28,9 @@ browser:
 		apt-get update -qq && apt-get install -y -qq chromium >/dev/null || echo "chromium not installed: browser test will be skipped"; \
 	fi
 
+bench: $(STAMP)
+	for script in benchmarks/bench_*.py; do $(BIN)/python $$script || exit 1; done
+
 lint: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/ruff format --check .
