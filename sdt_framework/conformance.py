@@ -62,15 +62,16 @@ def _check_sensor(spec: SensorSpec) -> None:
 
 
 def _check_feature_set(spec: FeatureSetSpec) -> None:
-    rng = np.random.default_rng(0)
-    fs = 3200.0
-    windows = rng.normal(size=(4, 2048))
-    windows -= windows.mean(axis=1, keepdims=True)
-    out = np.asarray(spec.compute(windows, fs))
-    if out.shape != (4, len(spec.feature_names)):
-        _fail(spec, f"compute returned shape {out.shape}, expected (4, {len(spec.feature_names)})")
-    if not np.issubdtype(out.dtype, np.floating) or not np.all(np.isfinite(out)):
-        _fail(spec, f"compute returned dtype {out.dtype} or non-finite values")
+    # Through the real extraction path: windowing, centring, output validation.
+    from .features import extract
+
+    signal = np.random.default_rng(0).normal(size=(2, 4800))  # 2 x 1.5 s at 3200 Hz
+    try:
+        table = extract(signal, 3200.0, spec)
+    except SDTError as exc:
+        raise ConformanceError(f"{exc} (plugin {spec.plugin!r})") from None
+    if table.values.shape != (4, len(spec.feature_names)):  # 2 windows per acquisition
+        _fail(spec, f"expected 4 windows x {len(spec.feature_names)}, got {table.values.shape}")
 
 
 def _check_classifier(spec: ClassifierSpec) -> None:
