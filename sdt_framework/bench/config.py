@@ -24,8 +24,10 @@ __all__ = ["SCENARIOS", "BenchmarkConfig", "load_config", "write_config"]
 
 SCENARIOS = ("forward", "backward", "interpolation")
 
-#: what --quick changes: fewer repetitions, shorter synthetic acquisitions
-QUICK = {"repeats": 2, "dataset_options": {"duration": 4.0}}
+#: --quick: 2 repetitions, 4 s synthetic acquisitions, one 60 s measurement per NLN-EMP run
+QUICK_REPEATS = 2
+QUICK_SYNTHETIC_DURATION_S = 4.0
+QUICK_NLN_EMP_ACQUISITIONS = 5
 
 
 class BenchmarkConfig(BaseModel):
@@ -96,7 +98,7 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
     """Read a TOML config (optional) and apply command-line overrides on top.
 
     ``overrides`` holds only the options the user actually gave; ``quick``
-    (if true) applies the :data:`QUICK` preset under them.
+    (if true) adds the quick preset under everything given explicitly.
     """
     data: dict[str, Any] = {}
     where = "command line"
@@ -110,13 +112,23 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
             raise SDTError(f"{path}: not valid TOML: {exc}") from None
         data = data.get("benchmark", data)
     if overrides.pop("quick", False):
-        options = {**data.get("dataset_options", {}), **QUICK["dataset_options"]}
-        data = {**data, "repeats": QUICK["repeats"], "dataset_options": options}
+        data = _quick({**data, **overrides})
     data.update(overrides)
     try:
         return BenchmarkConfig.model_validate(data)
     except ValidationError as exc:
         raise _error(exc, where) from None
+
+
+def _quick(data: dict[str, Any]) -> dict[str, Any]:
+    """The quick preset, under explicit settings: fewer repetitions and less data per run."""
+    options = dict(data.get("dataset_options", {}))
+    source = data.get("data")
+    if source is None and data.get("dataset") in (None, "synthetic-pump"):
+        options.setdefault("duration", QUICK_SYNTHETIC_DURATION_S)
+    elif source is not None and Path(source).is_dir():  # an NLN-EMP root
+        options.setdefault("max_acquisitions", QUICK_NLN_EMP_ACQUISITIONS)
+    return {"repeats": QUICK_REPEATS, **data, "dataset_options": options}
 
 
 def write_config(config: BenchmarkConfig, path: str | os.PathLike[str]) -> None:

@@ -87,14 +87,7 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     sensors = _pick(config.sensors, registry.sensor, registry.sensors())
     classifiers = _pick(config.classifiers, registry.classifier, registry.classifiers())
     feature_set = resolve_feature_set(registry, config.features)
-    options = dict(config.dataset_options)
-    if config.dataset:
-        spec = registry.dataset(config.dataset)
-        if spec.requires_path and not config.data:
-            raise SDTError(f"dataset {config.dataset!r} needs --data PATH")
-        dataset = spec.loader(config.data, **options)
-    else:
-        dataset = open_dataset(registry, config.data or "synthetic-pump", **options)
+    dataset = _open(config, registry)
     recordings = dataset.recordings()
     if not recordings:
         raise SDTError(f"dataset {dataset.name!r} has no usable recordings")
@@ -121,7 +114,9 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     ]
     needed = set(zip(used["machine"], used["run"], strict=True))
     recordings = [r for r in recordings if (r.machine, r.run) in needed]
-    key_source = json.dumps([dataset.name, config.data, options], sort_keys=True, default=str)
+    key_source = json.dumps(
+        [dataset.name, config.data, config.dataset_options], sort_keys=True, default=str
+    )
     return Plan(
         config,
         dataset,
@@ -133,6 +128,25 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
         allocation,
         skipped,
     )
+
+
+def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
+    """Open the configured dataset; an option its loader does not take is a user error."""
+    options = dict(config.dataset_options)
+    try:
+        if config.dataset:
+            spec = registry.dataset(config.dataset)
+            if spec.requires_path and not config.data:
+                raise SDTError(f"dataset {config.dataset!r} needs --data PATH")
+            return spec.loader(config.data, **options)
+        return open_dataset(registry, config.data or "synthetic-pump", **options)
+    except TypeError as exc:
+        if "unexpected keyword argument" not in str(exc):
+            raise
+        raise SDTError(
+            f"dataset_options {sorted(options)} do not fit the dataset "
+            f"({config.dataset or config.data or 'synthetic-pump'}): {exc}"
+        ) from None
 
 
 def _check_rates(recordings: list[Recording], sensors: list[SensorSpec], config) -> None:

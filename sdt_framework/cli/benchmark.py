@@ -78,7 +78,11 @@ def benchmark(
     backend: str | None = typer.Option(None, "--backend", help="local (default) or dask."),
     scheduler: str | None = typer.Option(None, "--scheduler", help="Dask scheduler address."),
     cache_dir: str | None = typer.Option(None, "--cache-dir", help="Feature cache folder."),
-    quick: bool = typer.Option(False, "--quick", help="Small preset: 2 repeats, 4 s acquisitions."),
+    quick: bool = typer.Option(
+        False,
+        "--quick",
+        help="Small preset: 2 repeats; 4 s synthetic acquisitions or 5 per NLN-EMP run.",
+    ),
     no_report: bool = typer.Option(False, "--no-report", help="Skip report.md/report.html."),
 ) -> None:
     """Benchmark sensors x classifiers x scenarios and write tidy results and Table 4.
