@@ -1,11 +1,10 @@
-"""The benchmark orchestrator: plan, featurise, classify, collect.
+"""Running a planned benchmark: featurise, classify, collect, resume.
 
 For each machine x scenario x sensor x classifier x repetition (SPEC section
 7): degrade (noise seeded per repetition), extract features, standardise on
-the training runs only, fit, predict and score. :func:`plan_benchmark`
-resolves and checks everything before any work starts; :func:`run_benchmark`
-executes the plan locally or on Dask, resuming from the per-run files already
-in the output folder.
+the training runs only, fit, predict and score. :func:`run_benchmark` executes
+a :class:`~sdt_framework.bench.plan.Plan` locally or on Dask, resuming from
+the per-run files already in the output folder.
 """
 
 from __future__ import annotations
@@ -21,38 +20,17 @@ from typing import Any
 import pandas as pd
 
 from ..data.cache import default_cache_dir
-from ..data.open import open_dataset
-from ..data.recording import Dataset, Recording
-from ..errors import SDTError
-from ..features import resolve_feature_set, samples_for
 from ..io import atomic_write_text
-from ..registry import Registry
 from ..seeding import derive_seed
-from ..specs import ClassifierSpec, FeatureSetSpec, SensorSpec
+from ..specs import ClassifierSpec, SensorSpec
 from .classify import RunResult, RunTask, run_classifier
-from .config import BenchmarkConfig
 from .execute import open_executor
 from .featurize import FeatureBlock, FeatureJob, featurize_recording
-from .scenarios import Run, check_allocation, load_allocation, rule_allocation
+from .plan import Plan, plan_benchmark
 
 __all__ = ["BenchmarkResult", "Plan", "plan_benchmark", "run_benchmark"]
 
 Progress = Callable[[str, int, int], None]
-
-
-@dataclass
-class Plan:
-    """A fully resolved, checked benchmark."""
-
-    config: BenchmarkConfig
-    dataset: Dataset
-    dataset_key: str
-    recordings: list[Recording]
-    sensors: list[SensorSpec]
-    classifiers: list[ClassifierSpec]
-    feature_set: FeatureSetSpec
-    allocation: pd.DataFrame
-    skipped: dict[tuple[str, str], str]
 
 
 @dataclass
@@ -67,107 +45,6 @@ class BenchmarkResult:
     runs_computed: int = 0
     runs_resumed: int = 0
     seconds: dict[str, float] = field(default_factory=dict)
-
-
-def _pick(names: list[str] | None, lookup: Callable[[str], Any], everything: list) -> list:
-    return [lookup(n) for n in names] if names else everything
-
-
-def _select(values: list[str] | None, available: set[str], what: str) -> set[str]:
-    if values is None:
-        return available
-    unknown = sorted(set(values) - available)
-    if unknown:
-        raise SDTError(f"unknown {what} {unknown}; the data has {sorted(available)}")
-    return set(values)
-
-
-def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
-    """Resolve every name and check the data before any work starts."""
-    sensors = _pick(config.sensors, registry.sensor, registry.sensors())
-    classifiers = _pick(config.classifiers, registry.classifier, registry.classifiers())
-    feature_set = resolve_feature_set(registry, config.features)
-    dataset = _open(config, registry)
-    recordings = dataset.recordings()
-    if not recordings:
-        raise SDTError(f"dataset {dataset.name!r} has no usable recordings")
-    machines = _select(config.machines, {r.machine for r in recordings}, "machine(s)")
-    channels = _select(config.channels, {r.channel for r in recordings}, "channel(s)")
-    recordings = [r for r in recordings if r.machine in machines and r.channel in channels]
-    _check_rates(recordings, sensors, config)
-
-    runs = sorted(
-        {Run(r.machine, r.run, r.condition, r.severity) for r in recordings},
-        key=lambda r: (r.machine, r.run),
-    )
-    if config.allocation:
-        allocation = load_allocation(config.allocation, runs)
-        allocation = allocation[allocation["scenario"].isin(config.scenarios)]
-    else:
-        allocation = rule_allocation(runs, config.scenarios)
-    skipped = check_allocation(allocation)
-    used = allocation[
-        [
-            (m, s) not in skipped
-            for m, s in zip(allocation["machine"], allocation["scenario"], strict=True)
-        ]
-    ]
-    needed = set(zip(used["machine"], used["run"], strict=True))
-    recordings = [r for r in recordings if (r.machine, r.run) in needed]
-    key_source = json.dumps(
-        [dataset.name, config.data, config.dataset_options], sort_keys=True, default=str
-    )
-    return Plan(
-        config,
-        dataset,
-        hashlib.sha256(key_source.encode()).hexdigest()[:16],
-        recordings,
-        sensors,
-        classifiers,
-        feature_set,
-        allocation,
-        skipped,
-    )
-
-
-def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
-    """Open the configured dataset; an option its loader does not take is a user error."""
-    options = dict(config.dataset_options)
-    try:
-        if config.dataset:
-            spec = registry.dataset(config.dataset)
-            if spec.requires_path and not config.data:
-                raise SDTError(f"dataset {config.dataset!r} needs --data PATH")
-            return spec.loader(config.data, **options)
-        return open_dataset(registry, config.data or "synthetic-pump", **options)
-    except TypeError as exc:
-        if "unexpected keyword argument" not in str(exc):
-            raise
-        raise SDTError(
-            f"dataset_options {sorted(options)} do not fit the dataset "
-            f"({config.dataset or config.data or 'synthetic-pump'}): {exc}"
-        ) from None
-
-
-def _check_rates(recordings: list[Recording], sensors: list[SensorSpec], config) -> None:
-    for rate in sorted({r.sampling_rate_hz for r in recordings}):
-        example = next(r for r in recordings if r.sampling_rate_hz == rate)
-        seconds = example.samples_per_acquisition / rate
-        for sensor in sensors:
-            if sensor.sampling_rate_hz > rate:
-                raise SDTError(
-                    f"sensor {sensor.name!r} samples at {sensor.sampling_rate_hz:g} Hz, above the "
-                    f"data's {rate:g} Hz (e.g. {example.source}); drop it from --sensors or use "
-                    f"data recorded at least that fast"
-                )
-            need = samples_for(config.window_s, sensor.sampling_rate_hz) + samples_for(
-                config.settle_s, sensor.sampling_rate_hz
-            )
-            if seconds * sensor.sampling_rate_hz < need:
-                raise SDTError(
-                    f"acquisitions of {seconds:g} s are too short for one {config.window_s} s "
-                    f"window after {config.settle_s} s settling (e.g. {example.source})"
-                )
 
 
 def _run_key(
