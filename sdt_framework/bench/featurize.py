@@ -7,16 +7,17 @@ depend on the order or the process a task runs in. A profile that injects no
 noise (the reference) is deterministic: it is computed once and shared by all
 repetitions.
 
-Feature blocks are cached on disk keyed by the dataset, the recording, the
-sensor's and the feature set's content hashes, the windowing and the noise
-seed, so adding a classifier to a finished benchmark recomputes no features.
-A failure is never cached.
+Feature blocks are cached on disk keyed by the dataset, the recording (and
+its file's size and modification time), the sensor's and the feature set's
+content hashes, the windowing and the noise seed, so adding a classifier to a
+finished benchmark recomputes no features. A failure is never cached.
 """
 
 from __future__ import annotations
 
 import hashlib
 import json
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -69,11 +70,21 @@ def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) ->
     return derive_seed(seed, "noise", repeat, recording_id)
 
 
+def _source_state(source: str) -> list[int] | None:
+    """(size, mtime) of a recording's file, so an edited file is never served from cache."""
+    try:
+        stat = os.stat(source)
+    except OSError:  # generated data ("synthetic") has no file
+        return None
+    return [stat.st_size, stat.st_mtime_ns]
+
+
 def _key(job: FeatureJob, sensor: SensorSpec, chain_seed: int | None) -> str:
     parts = {
         "version": CACHE_VERSION,
         "dataset": job.dataset_key,
         "recording": job.recording.metadata(),
+        "source_state": _source_state(job.recording.source),
         "sensor": sensor.content_hash(),
         "features": job.feature_set.content_hash(),
         "window_s": job.window_s,

@@ -49,3 +49,27 @@ def test_benchmark_on_files_in_the_nln_emp_layout(small_config, registry, tmp_pa
     in_memory = tidy(run_benchmark(plan_benchmark(direct, registry), tmp_path / "o2").runs)[0]
     from_files = results[(results.sensor == "wilcoxon-786b10") & (results.classifier == "lr")]
     assert from_files["macro_f1"].round(2).tolist() == in_memory["macro_f1"].round(2).tolist()
+
+
+def test_an_edited_data_file_is_featurised_again(small_config, registry, tmp_path):
+    synthetic = open_synthetic(None, duration=1.5, machines=["Motor-2"], channels=["ch1"])
+    files = write_nln_emp(synthetic, tmp_path / "nln")
+    config = small_config(
+        data=str(tmp_path / "nln"),
+        dataset_options={},
+        channels=["ch1"],
+        sensors=["wilcoxon-786b10"],
+        classifiers=["lr"],
+        repeats=1,
+    )
+    first = run_benchmark(plan_benchmark(config, registry), tmp_path / "a")
+    assert first.features_computed == 15 and first.features_cached == 0
+    again = run_benchmark(plan_benchmark(config, registry), tmp_path / "b")
+    assert again.features_computed == 0 and again.features_cached == 15
+    edited = files[0]  # a real edit: one sample of one acquisition changes
+    lines = edited.read_text().splitlines()
+    time_value, *values = lines[1000].split(",")
+    lines[1000] = ",".join([time_value, "0.5", *values[1:]])
+    edited.write_text("\n".join(lines) + "\n")
+    third = run_benchmark(plan_benchmark(config, registry), tmp_path / "c")
+    assert third.features_computed == 1 and third.features_cached == 14
