@@ -75,3 +75,12 @@ def test_conformance_catches_a_name_clash():
     module.register_classifiers = hookimpl(lambda register: register(spec))
     with pytest.raises(ConformanceError, match="already provided by plugin 'lr'"):
         check_plugin(module)
+
+
+def test_the_core_never_imports_a_builtin_plugin():
+    offenders = [
+        str(path.relative_to(ROOT))
+        for path in sorted((ROOT / "sdt_framework").rglob("*.py"))
+        if "sdt_plugins" in path.read_text()
+    ]
+    assert offenders == []
