@@ -15,7 +15,7 @@ from matplotlib.figure import Figure
 from scipy import signal
 
 from ..chain import NoiseCheck
-from ..chain.noise_check import BAND_HZ
+from ..chain.noise_plot import draw_noise
 from .signals import SensorTrace
 from .style import LINESTYLES, new_figure
 
@@ -104,45 +104,26 @@ def plot_sdt_overlay(
 def plot_noise(checks: Sequence[NoiseCheck], colors: dict[str, str]) -> Figure:
     """(a) First 50 ms of each profile's zero-motion output, mg; (b) its ASD, µg/√Hz.
 
-    The ASD uses the check's own settings (Welch, ``nperseg = window_length``
-    over its windows); the 10..1500 Hz NSD band is shaded and each mean NSD
-    drawn as a dashed line, as in ``sdt validate-noise --plot``.
+    Every noisy profile in one figure with the report's sensor colours, drawn by
+    :func:`sdt_framework.chain.noise_plot.draw_noise` exactly as
+    ``sdt validate-noise --plot`` draws one.
     """
     fig = new_figure(12, 4.4)
     ax_t, ax_f = fig.subplots(1, 2)
-    for i, check in enumerate(checks):
-        color = colors.get(check.sensor)
-        n = check.window_length
-        x = check.sdt_signal[:n] - np.mean(check.sdt_signal[:n])
-        t_ms = np.arange(n) / check.sdt_fs * 1e3
-        shown = t_ms <= 50.0
-        ax_t.step(
-            t_ms[shown],
-            x[shown] * 1e3,
-            where="post",
-            lw=0.7,
-            color=color,
-            ls=LINESTYLES[i % len(LINESTYLES)],
-            label=f"{check.sensor}: RMS {check.sdt.rms_mg.mean():.2f} mg",
+    series = [
+        (
+            c.sensor,
+            c.sdt_signal,
+            c.sdt_fs,
+            c.sdt,
+            colors.get(c.sensor),
+            LINESTYLES[i % len(LINESTYLES)],
         )
-        freqs, psd = signal.welch(
-            check.sdt_signal[: check.n_windows * n], fs=check.sdt_fs, nperseg=n
-        )
-        nsd = check.sdt.nsd_ug_rthz.mean()
-        ax_f.loglog(
-            freqs[1:],
-            np.sqrt(psd[1:]) * 1e6,
-            lw=0.8,
-            color=color,
-            label=f"{check.sensor}: NSD {nsd:.1f} µg/√Hz",
-        )
-        ax_f.axhline(nsd, color=color, ls="--", lw=0.8)
-    ax_f.axvspan(*BAND_HZ, color="0.92", zorder=0, label="NSD band 10–1500 Hz")
-    ax_t.set(
-        xlabel="time, ms", ylabel="acceleration, mg", title="(a) zero-motion noise (SDT, x_ref = 0)"
-    )
-    ax_f.set(xlabel="frequency, Hz", ylabel="ASD, µg/√Hz", title="(b) amplitude spectral density")
-    for ax, where in ((ax_t, "upper right"), (ax_f, "lower left")):
-        ax.grid(alpha=0.3, which="both")
-        ax.legend(fontsize=8, loc=where)
+        for i, c in enumerate(checks)
+    ]
+    if len({(c.window_length, c.n_windows) for c in checks}) > 1:
+        raise ValueError("noise checks with different windowing cannot share one figure")
+    if checks:
+        draw_noise(ax_t, ax_f, series, checks[0])
+    ax_t.set_title("(a) zero-motion noise (SDT, x_ref = 0)")
     return fig
