@@ -10,7 +10,7 @@ with scenario blocks, sensor rows and machine x classifier columns.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +23,7 @@ __all__ = [
     "RUN_COLUMNS",
     "SCENARIO_TITLES",
     "table4",
+    "table4_blocks",
     "table4_markdown",
     "tidy",
     "write_frame",
@@ -99,6 +100,23 @@ def table4(results: pd.DataFrame) -> pd.DataFrame:
     )
 
 
+def table4_blocks(
+    wide: pd.DataFrame, sensor_order: Sequence[str] = ()
+) -> Iterator[tuple[str, pd.DataFrame, list[str]]]:
+    """(scenario, its block of ``table4(...)``, sensors in display order) per scenario.
+
+    Scenarios come in the paper's order (A, B, C); sensors in ``sensor_order``
+    first, then any others in the block. Every view of Table 4 (Markdown,
+    terminal, report deltas) walks the table through this one function.
+    """
+    present = set(wide.index.get_level_values(0))
+    for scenario in [s for s in SCENARIO_TITLES if s in present]:
+        block = wide.loc[scenario]
+        sensors = [s for s in sensor_order if s in block.index]
+        sensors += [s for s in block.index if s not in sensors]
+        yield scenario, block, sensors
+
+
 def _cell(mean: float, sd: float, n: float) -> str:
     if np.isnan(mean):
         return "–"
@@ -115,10 +133,7 @@ def table4_markdown(results: pd.DataFrame, sensor_order: list[str] | None = None
     columns = sorted({(m, c) for m, c, _ in wide.columns})
     header = "| Sensor | " + " | ".join(f"{m} {c.upper()}" for m, c in columns) + " |"
     lines = [header, "|---|" + "---|" * len(columns)]
-    for scenario in [s for s in SCENARIO_TITLES if s in wide.index.get_level_values(0)]:
-        block = wide.loc[scenario]
-        sensors = [s for s in (sensor_order or []) if s in block.index]
-        sensors += [s for s in block.index if s not in sensors]
+    for scenario, block, sensors in table4_blocks(wide, sensor_order or ()):
         lines.append(f"| **{SCENARIO_TITLES[scenario]}** |" + " |" * len(columns))
         best = {col: block[(*col, "mean")].max() for col in columns}
         for sensor in sensors:

@@ -19,7 +19,7 @@ def _names(value: str | None) -> list[str] | None:
 
 def _print_table4(results: Any, sensor_order: list[str]) -> None:
     """Table 4 in the terminal: one table per machine, scenario blocks, mean over ± SD."""
-    from ..bench.results import SCENARIO_TITLES, table4
+    from ..bench.results import table4, table4_blocks
 
     wide = table4(results)
     if wide.empty:
@@ -32,9 +32,7 @@ def _print_table4(results: Any, sensor_order: list[str]) -> None:
         out.add_column("sensor")
         for clf in classifiers:
             out.add_column(clf.upper(), justify="right")
-        for scenario in [s for s in SCENARIO_TITLES if s in wide.index.get_level_values(0)]:
-            block = wide.loc[scenario]
-            sensors = [s for s in sensor_order if s in block.index]
+        for scenario, block, sensors in table4_blocks(wide, sensor_order):
             for i, sensor in enumerate(sensors):
                 cells = []
                 for clf in classifiers:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..bench.results import SCENARIO_TITLES, table4, table4_markdown
+from ..bench.results import SCENARIO_TITLES, table4, table4_blocks, table4_markdown
 from .document import Table, parse_md_table
 
 __all__ = ["allocation_table", "delta_table", "failed_table", "table4_table"]
@@ -44,15 +44,12 @@ def delta_table(results: pd.DataFrame, sensors: list[str], reference: str) -> Ta
         return None
     columns = sorted({(m, c) for m, c, _ in wide.columns})
     rows: list[tuple[str, ...]] = []
-    for scenario in [s for s in SCENARIO_TITLES if s in wide.index.get_level_values(0)]:
-        block = wide.loc[scenario]
+    for scenario, block, ordered in table4_blocks(wide, sensors):
         if reference not in block.index:
             continue
         means = block.xs("mean", axis=1, level=2)
         delta = means.drop(index=reference) - means.loc[reference]
-        order = [s for s in sensors if s in delta.index] + [
-            s for s in delta.index if s not in sensors
-        ]
+        order = [s for s in ordered if s != reference]
         if not order:
             continue
         rows.append((f"**{SCENARIO_TITLES[scenario]}**",) + ("",) * len(columns))
