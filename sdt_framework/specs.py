@@ -25,7 +25,8 @@ __all__ = [
     "Spec",
 ]
 
-_NAME = re.compile(r"^[a-z0-9][a-z0-9._-]*$")
+#: a plain name, optionally followed by a design point's settings (``adxl345~rate=1600,nsd=90``)
+_NAME = re.compile(r"^[a-z0-9][a-z0-9._-]*(~[a-z0-9_]+=[a-z0-9.+-]+(,[a-z0-9_]+=[a-z0-9.+-]+)*)?$")
 
 
 class Spec(BaseModel):

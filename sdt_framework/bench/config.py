@@ -20,7 +20,14 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from ..errors import SDTError, SpecFileError
 from ..io import atomic_write_text
 
-__all__ = ["SCENARIOS", "BenchmarkConfig", "load_config", "write_config"]
+__all__ = [
+    "SCENARIOS",
+    "BenchmarkConfig",
+    "config_error",
+    "load_config",
+    "quick_preset",
+    "write_config",
+]
 
 SCENARIOS = ("forward", "backward", "interpolation")
 
@@ -87,7 +94,8 @@ class BenchmarkConfig(BaseModel):
         return os.cpu_count() or 1 if self.jobs == -1 else self.jobs
 
 
-def _error(exc: ValidationError, where: str) -> SDTError:
+def config_error(exc: ValidationError, where: str) -> SDTError:
+    """One line naming ``where``, the first invalid field, the reason and the value."""
     first = exc.errors()[0]
     field = ".".join(str(p) for p in first["loc"])
     reason = "unknown option" if first["type"] == "extra_forbidden" else first["msg"]
@@ -112,15 +120,15 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
             raise SDTError(f"{path}: not valid TOML: {exc}") from None
         data = data.get("benchmark", data)
     if overrides.pop("quick", False):
-        data = _quick({**data, **overrides})
+        data = quick_preset({**data, **overrides})
     data.update(overrides)
     try:
         return BenchmarkConfig.model_validate(data)
     except ValidationError as exc:
-        raise _error(exc, where) from None
+        raise config_error(exc, where) from None
 
 
-def _quick(data: dict[str, Any]) -> dict[str, Any]:
+def quick_preset(data: dict[str, Any]) -> dict[str, Any]:
     """The quick preset, under explicit settings: fewer repetitions and less data per run."""
     options = dict(data.get("dataset_options", {}))
     source = data.get("data")

@@ -13,6 +13,7 @@ from . import dataset as dataset_cli
 from .benchmark import benchmark
 from .chain import register as register_chain_commands
 from .common import err_console
+from .explore import explore
 from .report import report
 
 app = typer.Typer(
@@ -30,6 +31,7 @@ app.add_typer(dataset_cli.app, name="dataset")
 register_chain_commands(app)
 app.command("benchmark")(benchmark)
 app.command("report")(report)
+app.command("explore")(explore)
 
 
 @app.callback()

@@ -1,0 +1,110 @@
+"""``sdt explore``: which sensor specification is enough — a sweep over chain parameters."""
+
+from __future__ import annotations
+
+import datetime as dt
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import typer
+
+from .common import console, err_console, registry
+
+#: estimated runs above this many seconds need --yes
+CONFIRM_SECONDS = 3600.0
+
+
+def _example() -> str:
+    return resources.files("sdt_framework.explore").joinpath("example_sweep.toml").read_text()
+
+
+def explore(
+    ctx: typer.Context,
+    sweep_file: Path | None = typer.Argument(
+        None, help="Sweep TOML file (a sweep table, optional benchmark table)."
+    ),
+    data: str | None = typer.Option(None, "--data", help="NLN-EMP root folder or manifest."),
+    quick: bool = typer.Option(False, "--quick", help="The benchmark's quick preset."),
+    jobs: int | None = typer.Option(None, "--jobs", help="Processes (default: all cores)."),
+    backend: str | None = typer.Option(None, "--backend", help="local (default) or dask."),
+    scheduler: str | None = typer.Option(None, "--scheduler", help="Dask scheduler address."),
+    out: Path | None = typer.Option(
+        None, "--out", help="Output folder (default results/explore-<timestamp>); reuse to resume."
+    ),
+    yes: bool = typer.Option(False, "--yes", help="Run even if the estimate exceeds an hour."),
+    example: bool = typer.Option(False, "--example", help="Print a commented starter sweep."),
+    no_report: bool = typer.Option(False, "--no-report", help="Skip report.md/report.html."),
+) -> None:
+    """Sweep sensor parameters around a base sensor and find the minimum specification.
+
+    Every design point runs the full `sdt benchmark` protocol; the folder gets
+    explore.parquet, points.csv, skipped_points.csv, main_effects.csv,
+    sensitivity.csv, min_spec.csv, pareto.csv and an Exploration report section.
+
+    Example:
+
+      sdt explore --example > my_sweep.toml
+
+      sdt explore examples/sweeps/rate_noise.toml --quick --out results/rate-noise
+    """
+    if example:
+        console.print(_example(), markup=False, highlight=False, end="")
+        return
+    if sweep_file is None:
+        raise typer.BadParameter("give a sweep file, or --example to print one", param_hint="SWEEP")
+    from ..bench.estimate import estimate_seconds
+    from ..bench.output import write_outputs
+    from ..bench.runner import run_benchmark
+    from ..errors import SDTError
+    from ..explore.output import write_explore
+    from ..explore.run import explore_table, plan_explore
+    from ..explore.sweep import load_sweep
+    from .progress import progress_bar
+
+    sweep, protocol = load_sweep(sweep_file)
+    given = {"data": data, "jobs": jobs, "backend": backend, "scheduler": scheduler}
+    overrides: dict[str, Any] = {k: v for k, v in given.items() if v is not None}
+    if quick:
+        overrides["quick"] = True
+    reg = registry(ctx)
+    explore_plan = plan_explore(sweep, protocol, overrides, reg, where=str(sweep_file))
+    plan = explore_plan.plan
+    out_dir = out or Path("results") / dt.datetime.now().strftime("explore-%Y%m%d-%H%M%S")
+    for row in explore_plan.skipped.itertuples():
+        err_console.print(f"skipped point {row.point}: {row.reason}", markup=False)
+    for (machine, scenario), reason in sorted(plan.skipped.items()):
+        err_console.print(f"skipped {machine} / {scenario}: {reason}", markup=False)
+    seconds, runs = estimate_seconds(plan)
+    console.print(
+        f"{len(explore_plan.points)} points ({len(explore_plan.skipped)} skipped) + reference "
+        f"and base: {runs} runs on {len(plan.recordings)} recordings, estimated "
+        f"{seconds / 60:.0f} min on {plan.config.n_jobs()} process(es) -> {out_dir}",
+        markup=False,
+        highlight=False,
+        soft_wrap=True,
+    )
+    if seconds > CONFIRM_SECONDS and not yes:
+        raise SDTError(
+            f"this sweep is estimated at {seconds / 3600:.1f} h ({runs} runs); add --yes to run "
+            f"it, or shrink it (--quick, fewer levels, repeats or classifiers)"
+        )
+    with progress_bar() as progress:
+        result = run_benchmark(plan, out_dir, progress)
+    results = write_outputs(result, out_dir)
+    tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
+    if plan.config.report and not no_report:
+        from ..report import write_report
+
+        write_report(out_dir, registry=reg)
+    spec = tables["min_spec"]
+    best = spec[spec["classifier"] == "best"]
+    for row in best.itertuples():
+        level = "none" if row.min_level != row.min_level else f"{row.min_level:g}"
+        console.print(
+            f"{row.machine} / {row.scenario}: least demanding {row.parameter} = {level} "
+            f"({row.target}; base {row.base_level:g})",
+            markup=False,
+            highlight=False,
+        )
+    console.print(f"{len(results)} runs; exploration in {out_dir}", markup=False, highlight=False)

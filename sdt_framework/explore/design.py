@@ -1,0 +1,110 @@
+"""Design matrices: which parameter combinations a sweep evaluates.
+
+- ``grid``: the full factorial of every axis's levels (a range gives ``steps``
+  levels, evenly spaced on its scale).
+- ``lhs``: a Latin hypercube of ``samples`` points (scipy.stats.qmc).
+- ``sobol``: Saltelli's extension of a Sobol' sequence (SALib), the sample
+  SALib's Sobol' analysis needs for first and total indices: ``samples * (d + 2)``
+  points.
+- ``morris``: ``samples`` elementary-effect trajectories on ``levels`` grid
+  levels (SALib): ``samples * (d + 1)`` points.
+
+Each design is first drawn in the unit cube (those coordinates are kept, the
+sensitivity estimators need them) and then mapped to physical values: linear
+or logarithmic within a range, or the nearest of an axis's explicit levels.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+import pandas as pd
+from scipy.stats import qmc
+
+from ..errors import SDTError
+from .sweep import INTEGER_FIELDS, Axis, Sweep
+
+__all__ = ["axis_levels", "design_points", "salib_problem", "unit_column"]
+
+
+def unit_column(field: str) -> str:
+    """Column holding a parameter's unit-cube coordinate."""
+    return f"u_{field}"
+
+
+def axis_levels(axis: Axis) -> list[float]:
+    """The grid levels of an axis: its explicit levels, or ``steps`` across its range."""
+    if axis.levels is not None:
+        return [float(v) for v in axis.levels]
+    low, high = axis.range  # type: ignore[misc]
+    if axis.scale == "log":
+        return list(np.geomspace(low, high, axis.steps))
+    return list(np.linspace(low, high, axis.steps))
+
+
+def _to_value(axis: Axis, u: np.ndarray) -> np.ndarray:
+    """Map unit coordinates to physical values on the axis."""
+    if axis.levels is not None:
+        levels = np.asarray(axis.levels, dtype=float)
+        index = np.minimum((u * len(levels)).astype(int), len(levels) - 1)
+        return levels[index]
+    low, high = axis.range  # type: ignore[misc]
+    if axis.scale == "log":
+        return np.exp(np.log(low) + u * (np.log(high) - np.log(low)))
+    return low + u * (high - low)
+
+
+def salib_problem(sweep: Sweep) -> dict:
+    """SALib's problem definition: every axis on the unit interval."""
+    names = list(sweep.axes)
+    return {"num_vars": len(names), "names": names, "bounds": [[0.0, 1.0]] * len(names)}
+
+
+def _unit_design(sweep: Sweep) -> np.ndarray:
+    d = len(sweep.axes)
+    if sweep.design == "lhs":
+        return qmc.LatinHypercube(d=d, seed=sweep.seed).random(sweep.samples)
+    try:
+        if sweep.design == "sobol":
+            from SALib.sample import sobol
+
+            return sobol.sample(
+                salib_problem(sweep), sweep.samples, calc_second_order=False, seed=sweep.seed
+            )
+        from SALib.sample import morris
+
+        return morris.sample(
+            salib_problem(sweep), sweep.samples, num_levels=sweep.levels, seed=sweep.seed
+        )
+    except ImportError:
+        raise SDTError(
+            f"design {sweep.design!r} needs SALib; install it with `pip install SALib`"
+        ) from None
+
+
+def design_points(sweep: Sweep) -> pd.DataFrame:
+    """One row per design point: the swept fields in physical units (and ``u_`` columns).
+
+    Integer fields (bits, filter order) are rounded to whole numbers. Rows keep
+    the design's order (SALib's estimators rely on it).
+    """
+    fields = list(sweep.axes)
+    if sweep.design == "grid":
+        combos = list(itertools.product(*(axis_levels(sweep.axes[f]) for f in fields)))
+        frame = pd.DataFrame(combos, columns=fields)
+        for f in fields:
+            levels = axis_levels(sweep.axes[f])
+            frame[unit_column(f)] = [levels.index(v) / max(1, len(levels) - 1) for v in frame[f]]
+    else:
+        unit = _unit_design(sweep)
+        frame = pd.DataFrame(
+            {f: _to_value(sweep.axes[f], unit[:, i]) for i, f in enumerate(fields)}
+        )
+        for i, f in enumerate(fields):
+            frame[unit_column(f)] = unit[:, i]
+    for f in fields:
+        if f in INTEGER_FIELDS:
+            frame[f] = frame[f].round().astype(int)
+    frame.insert(0, "design_index", np.arange(len(frame)))
+    return frame

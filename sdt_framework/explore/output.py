@@ -1,0 +1,100 @@
+"""Everything a sweep adds to its results folder, each file written atomically.
+
+explore.parquet        one row per point x machine x scenario x classifier x repetition,
+                       every swept parameter a column (reference/base rows included)
+points.csv             every evaluated point: name, design index, values, cost
+skipped_points.csv     design points the spec rejected, with the reason
+main_effects.csv       mean Macro-F1 per parameter level and cell, with 95 % CIs
+sensitivity.csv        ANOVA shares (grid) or SALib indices (morris/sobol/lhs), ranked
+min_spec.csv           least demanding level of each parameter meeting the target
+min_spec_points.csv    every evaluated point meeting the target
+pareto.csv             cost and mean Macro-F1 of every point, and whether it is on the front
+sweep.toml             the sweep as run (re-run or resume with ``sdt explore sweep.toml``)
+
+The benchmark's own files (results.csv, table4.md, ...) sit beside them, so
+``sdt report`` and ``sdt compare`` read a sweep folder like any benchmark's.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pandas as pd
+import tomli_w
+
+from ..bench.results import write_frame
+from ..io import atomic_write_text
+from .effects import main_effects, point_means, with_best
+from .minspec import meeting_points, min_spec
+from .pareto import point_costs, with_front
+from .run import ExplorePlan
+from .sensitivity import sensitivity
+from .sweep import DEMAND
+
+__all__ = ["EXPLORE_FILES", "write_explore"]
+
+EXPLORE_FILES = (
+    "explore.parquet",
+    "points.csv",
+    "skipped_points.csv",
+    "main_effects.csv",
+    "sensitivity.csv",
+    "min_spec.csv",
+    "min_spec_points.csv",
+    "pareto.csv",
+    "sweep.toml",
+)
+
+
+def _base_cost(explore: ExplorePlan) -> float:
+    if explore.sweep.base_cost is not None:
+        return explore.sweep.base_cost
+    price = getattr(explore.base, "price", None)
+    return float(getattr(price, "value", price) or 0.0)
+
+
+def write_explore(
+    explore: ExplorePlan, table: pd.DataFrame, out_dir: str | Path
+) -> dict[str, pd.DataFrame]:
+    """Analyse the exploration table and write every file; return the tables by name."""
+    out = Path(out_dir)
+    sweep = explore.sweep
+    fields = list(sweep.axes)
+    base_values = {f: float(getattr(explore.base, f)) for f in fields}
+    demand = {f: (sweep.cost[f].demand if f in sweep.cost else None) or DEMAND[f] for f in fields}
+    analysed = with_best(table)
+    points = pd.DataFrame(
+        [{"point": p.spec.name, "design_index": p.index, **p.values} for p in explore.points]
+    )
+    points["cost"] = point_costs(points, base_values, sweep, _base_cost(explore))
+    means = point_means(analysed[analysed["role"] == "point"], fields)
+    pareto = with_front(means.merge(points[["point", "cost"]], on="point"))
+    tables = {
+        "points": points,
+        "skipped_points": explore.skipped,
+        "main_effects": main_effects(analysed, fields),
+        "sensitivity": sensitivity(analysed, sweep, len(explore.design)),
+        "min_spec": min_spec(analysed, fields, base_values, sweep.target, demand),
+        "min_spec_points": meeting_points(analysed, fields, sweep.target),
+        "pareto": pareto,
+    }
+    write_frame(table, out / "explore.parquet")
+    for name, frame in tables.items():
+        write_frame(frame, out / f"{name}.csv")
+    atomic_write_text(
+        out / "sweep.toml",
+        "# The sweep as run by sdt explore; re-run or resume: sdt explore sweep.toml --out .\n"
+        + tomli_w.dumps(
+            {
+                "sweep": sweep.model_dump(mode="json", exclude_none=True),
+                "benchmark": _protocol(explore),
+            }
+        ),
+    )
+    return tables
+
+
+def _protocol(explore: ExplorePlan) -> dict:
+    data = explore.plan.config.model_dump(mode="json", exclude_none=True)
+    data.pop("sensors", None)
+    return data

@@ -1,0 +1,98 @@
+"""Design points as sensor profiles: the base sensor with the point's values and ties.
+
+Each point goes through :class:`~sdt_framework.specs.SensorSpec` validation, so
+a combination the chain cannot run (a digital cutoff at or above the new
+Nyquist, say) is not evaluated: it is returned with the reason, to be written
+to ``skipped_points.csv``, and the sweep goes on.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import pandas as pd
+from pydantic import ValidationError
+
+from ..specs import SensorSpec
+from .sweep import INTEGER_FIELDS, SHORT_NAMES, Sweep
+from .ties import evaluate_tie
+
+__all__ = ["Point", "build_points", "point_name"]
+
+
+@dataclass(frozen=True)
+class Point:
+    """One evaluated design point: its index, values and sensor profile."""
+
+    index: int
+    values: dict[str, float]
+    spec: SensorSpec
+
+
+def _fmt(value: float, digits: int) -> str:
+    return f"{value:.{digits}g}"
+
+
+def point_name(base: str, values: dict[str, float], digits: int = 4) -> str:
+    """Readable name of a point, e.g. ``adxl345~rate=1600,nsd=90``."""
+    settings = ",".join(f"{SHORT_NAMES[k]}={_fmt(v, digits)}" for k, v in values.items())
+    return f"{base.split('~')[0]}~{settings}"
+
+
+def _reason(exc: ValidationError) -> str:
+    first = exc.errors()[0]
+    field = ".".join(str(p) for p in first["loc"])
+    message = first["msg"].removeprefix("Value error, ")
+    return f"{field}: {message}" if field else message
+
+
+def _resolved(sweep: Sweep, base: SensorSpec, row: dict[str, float]) -> dict[str, float]:
+    """The point's swept values plus every tie evaluated on them."""
+    values = {k: (int(v) if k in INTEGER_FIELDS else float(v)) for k, v in row.items()}
+    scope = {**base.model_dump(include=set(SHORT_NAMES)), **values}
+    scope = {k: v for k, v in scope.items() if v is not None}
+    named = {**scope, **{SHORT_NAMES[k]: v for k, v in scope.items()}}
+    for field, expression in sweep.ties.items():
+        tied = evaluate_tie(expression, named)
+        values[field] = round(tied) if field in INTEGER_FIELDS else tied
+        named[field] = named[SHORT_NAMES[field]] = values[field]
+    return values
+
+
+def build_points(
+    sweep: Sweep, base: SensorSpec, design: pd.DataFrame
+) -> tuple[list[Point], pd.DataFrame]:
+    """Validated points, and a table of the skipped ones with their reasons.
+
+    Names carry the swept values with 4 significant digits, more where two
+    points would otherwise share a name.
+    """
+    fields = list(sweep.axes)
+    rows = design[fields].to_dict("records")
+    digits = 4
+    while len({point_name(base.name, r, digits) for r in rows}) < len(rows) and digits < 17:
+        digits += 1
+    points: list[Point] = []
+    skipped: list[dict[str, object]] = []
+    content = base.model_dump(exclude={"plugin", "distribution"})
+    for index, row in zip(design["design_index"], rows, strict=True):
+        name = point_name(base.name, row, digits)
+        try:
+            values = _resolved(sweep, base, row)
+            spec = SensorSpec.model_validate(
+                {
+                    **content,
+                    **values,
+                    "name": name,
+                    "description": f"{base.name} with {', '.join(name.split('~')[1:])}",
+                    "source": f"design point {int(index)} of a sweep on {base.name}",
+                }
+            )
+        except ValidationError as exc:
+            skipped.append(
+                {"design_index": int(index), "point": name, **row, "reason": _reason(exc)}
+            )
+            continue
+        points.append(Point(int(index), values, spec))
+    columns = ["design_index", "point", *fields, "reason"]
+    return points, pd.DataFrame(skipped, columns=columns)

@@ -1,0 +1,126 @@
+"""Running a sweep: its points become sensors of one ordinary benchmark.
+
+The points, the base sensor and the reference are handed to
+:func:`~sdt_framework.bench.plan_benchmark` as the sensor list, so a sweep runs
+exactly the protocol of ``sdt benchmark`` (datasets, scenarios, classifiers,
+repetitions, seeds, feature cache, resume, local or Dask execution) and leaves
+the same files. The noise of an acquisition depends on (seed, repetition,
+recording, acquisition) only, never on the sensor's name, so every point sees
+the same draws (common random numbers) and a point equal to a registered
+sensor reproduces that sensor's benchmark numbers exactly.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import pandas as pd
+from pydantic import ValidationError
+
+from ..bench.config import BenchmarkConfig, config_error, quick_preset
+from ..bench.plan import Plan, plan_benchmark
+from ..errors import SDTError
+from ..registry import Registry
+from ..sensor_files import load_sensor_file
+from ..specs import SensorSpec
+from .design import design_points, unit_column
+from .points import Point, build_points
+from .sweep import Sweep
+
+__all__ = ["ExplorePlan", "explore_table", "plan_explore"]
+
+
+@dataclass
+class ExplorePlan:
+    """A sweep resolved into a checked benchmark plan."""
+
+    sweep: Sweep
+    base: SensorSpec
+    design: pd.DataFrame
+    points: list[Point]
+    skipped: pd.DataFrame
+    plan: Plan
+
+
+def resolve_base(name: str, registry: Registry) -> SensorSpec:
+    """The base sensor: a registered name (with a mode, if parts have one) or a TOML file."""
+    if name.endswith(".toml"):
+        specs = load_sensor_file(name)
+        if len(specs) != 1:
+            raise SDTError(f"{name}: the base file holds {len(specs)} sensors; keep one")
+        spec = specs[0]
+        if spec.name not in {s.name for s in registry.sensors()}:
+            registry.add(spec)
+        return spec
+    return registry.sensor(name)
+
+
+def plan_explore(
+    sweep: Sweep,
+    protocol: dict[str, Any],
+    overrides: dict[str, Any],
+    registry: Registry,
+    where: str = "sweep",
+) -> ExplorePlan:
+    """Design, build and register the points, and plan the benchmark that evaluates them.
+
+    ``protocol`` is the sweep file's ``[benchmark]`` table and ``overrides``
+    the command-line options (``quick`` applies the quick preset under them).
+    """
+    if "sensors" in protocol:
+        raise SDTError(
+            f"{where}: benchmark.sensors is set by the sweep (reference, base and points); "
+            f"remove it"
+        )
+    base = resolve_base(sweep.base, registry)
+    design = design_points(sweep)
+    points, skipped = build_points(sweep, base, design)
+    if not points:
+        raise SDTError(
+            f"{where}: none of the {len(design)} design points is a valid sensor; "
+            f"first reason: {skipped['reason'].iloc[0]}"
+        )
+    for point in points:
+        registry.add(point.spec)
+    data = {**protocol, **{k: v for k, v in overrides.items() if k != "quick"}}
+    if overrides.get("quick"):
+        data = quick_preset(data)
+    reference = data.get("reference", BenchmarkConfig.model_fields["reference"].default)
+    names = list(dict.fromkeys([reference, base.name, *(p.spec.name for p in points)]))
+    try:
+        config = BenchmarkConfig.model_validate({**data, "sensors": names})
+    except ValidationError as exc:
+        raise config_error(exc, where) from None
+    return ExplorePlan(sweep, base, design, points, skipped, plan_benchmark(config, registry))
+
+
+def explore_table(explore: ExplorePlan, results: pd.DataFrame) -> pd.DataFrame:
+    """The tidy exploration table: benchmark results plus each point's parameters.
+
+    One row per point x machine x scenario x classifier x repetition; the
+    reference and the base carry ``role`` "reference" and "base", the base
+    its own values of the swept parameters, the reference none.
+    """
+    fields = list(explore.sweep.axes)
+    ref = explore.plan.config.reference
+    rows = []
+    for point in explore.points:
+        rows.append(
+            {
+                "sensor": point.spec.name,
+                "role": "point",
+                "design_index": point.index,
+                **{f: point.values[f] for f in fields},
+            }
+        )
+    base_values = {f: getattr(explore.base, f) for f in fields}
+    rows.append({"sensor": explore.base.name, "role": "base", "design_index": -1, **base_values})
+    params = pd.DataFrame(rows).drop_duplicates("sensor")
+    units = explore.design.set_index("design_index")[[unit_column(f) for f in fields]]
+    params = params.join(units, on="design_index")
+    table = results.merge(params, on="sensor", how="left")
+    table.loc[table["sensor"] == ref, "role"] = "reference"
+    table = table[table["status"] == "ok"].rename(columns={"sensor": "point"})
+    table["design_index"] = table["design_index"].fillna(-1).astype(int)
+    return table.reset_index(drop=True)
