@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import datetime as dt
+import sys
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -49,7 +50,7 @@ def explore(
       sdt explore examples/sweeps/rate_noise.toml --quick --out results/rate-noise
     """
     if example:
-        console.print(_example(), markup=False, highlight=False, end="")
+        sys.stdout.write(_example())  # verbatim: no wrapping, no markup
         return
     if sweep_file is None:
         raise typer.BadParameter("give a sweep file, or --example to print one", param_hint="SWEEP")

@@ -1,0 +1,155 @@
+"""sdt explore end to end on a small synthetic protocol: files, equality with benchmark, Dask."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pandas as pd
+import pytest
+from typer.testing import CliRunner
+
+from sdt_framework import build_registry
+from sdt_framework.bench.config import BenchmarkConfig
+from sdt_framework.bench.output import write_outputs
+from sdt_framework.bench.runner import plan_benchmark, run_benchmark
+from sdt_framework.cli.main import app
+from sdt_framework.explore.output import EXPLORE_FILES, write_explore
+from sdt_framework.explore.run import explore_table, plan_explore
+from sdt_framework.explore.sweep import parse_sweep
+
+#: Motor-2 only, 1.5 s acquisitions, two channels, lr, two repetitions: seconds, not minutes
+PROTOCOL = {
+    "dataset_options": {"duration": 1.5},
+    "machines": ["Motor-2"],
+    "channels": ["ch1", "ch4"],
+    "classifiers": ["lr"],
+    "scenarios": ["forward", "interpolation"],
+    "repeats": 2,
+    "jobs": 1,
+    "report": False,
+}
+SWEEP = {
+    "base": "adxl345",
+    "axes": {
+        "sampling_rate_hz": {"levels": [1600, 3200]},
+        "noise_density_ug_rthz": {"levels": [90, 290]},
+    },
+    "ties": {"digital_cutoff_hz": "rate / 2 - 1"},
+    "target": {"max_loss": 0.1},
+}
+
+
+def run_explore(tmp_path, protocol=None, name="out"):
+    registry = build_registry()
+    protocol = {**PROTOCOL, "cache_dir": str(tmp_path / "cache"), **(protocol or {})}
+    explore = plan_explore(parse_sweep(SWEEP), protocol, {}, registry)
+    out = tmp_path / name
+    result = run_benchmark(explore.plan, out)
+    results = write_outputs(result, out)
+    table = explore_table(explore, results)
+    write_explore(explore, table, out)
+    return explore, result, table, out
+
+
+def test_a_point_equal_to_adxl345_reproduces_its_benchmark_exactly(tmp_path):
+    explore, result, table, _ = run_explore(tmp_path)
+    point = "adxl345~rate=3200,nsd=290"
+    assert point in {p.spec.name for p in explore.points}
+    config = BenchmarkConfig(
+        **{**PROTOCOL, "cache_dir": str(tmp_path / "cache2"), "sensors": ["adxl345"]}
+    )
+    bench = run_benchmark(plan_benchmark(config, build_registry()), tmp_path / "bench")
+    names = list(explore.plan.feature_set.feature_names)
+    ours = result.features[result.features["sensor"] == point]
+    theirs = bench.features[bench.features["sensor"] == "adxl345"]
+    assert np.array_equal(ours[names].to_numpy(), theirs[names].to_numpy())  # bit-identical
+    mine = table[table["point"] == point].sort_values(["scenario", "repeat"])
+    ref = pd.DataFrame([r.labels | {"macro_f1": r.macro_f1} for r in bench.runs])
+    ref = ref.sort_values(["scenario", "repeat"])
+    assert mine["macro_f1"].tolist() == ref["macro_f1"].tolist()
+
+
+def test_explore_writes_every_file_and_the_report_section(tmp_path):
+    explore, _, table, out = run_explore(tmp_path, {"report": True})
+    for name in EXPLORE_FILES:
+        assert (out / name).exists(), name
+    assert set(table["role"]) == {"reference", "base", "point"}
+    assert len(table[table["role"] == "point"]) == 4 * 2 * 2  # points x scenarios x repeats
+    parquet = pd.read_parquet(out / "explore.parquet")
+    assert {"sampling_rate_hz", "noise_density_ug_rthz", "macro_f1", "point"} <= set(parquet)
+    from sdt_framework.report import write_report
+
+    write_report(out, ["md"])
+    text = (out / "report.md").read_text()
+    assert "## Exploration" in text
+    assert "explore_main_effects.png" in text and "explore_pareto.png" in text
+
+
+def test_explore_on_a_local_dask_cluster_equals_the_local_run(tmp_path):
+    from distributed import LocalCluster
+
+    with LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    ) as cluster:
+        _, _, on_dask, _ = run_explore(
+            tmp_path,
+            {
+                "backend": "dask",
+                "scheduler": cluster.scheduler_address,
+                "cache_dir": str(tmp_path / "dask-cache"),
+            },
+            name="dask",
+        )
+    _, _, local, _ = run_explore(tmp_path, name="local")
+    columns = ["point", "machine", "scenario", "classifier", "repeat", "macro_f1"]
+    pd.testing.assert_frame_equal(
+        on_dask[columns].reset_index(drop=True), local[columns].reset_index(drop=True)
+    )
+
+
+def test_cli_example_prints_a_sweep_that_loads(tmp_path):
+    result = CliRunner().invoke(app, ["explore", "--example"])
+    assert result.exit_code == 0
+    path = tmp_path / "example.toml"
+    path.write_text(result.output)
+    from sdt_framework.explore import load_sweep
+
+    sweep, protocol = load_sweep(path)
+    assert sweep.base == "adxl345" and "sampling_rate_hz" in sweep.axes
+
+
+@pytest.mark.parametrize(
+    ("body", "message"),
+    [
+        ('[sweep]\nbase = "nope"\n[sweep.axes]\nadc_bits = { levels = [12] }', "unknown sensor"),
+        (
+            '[sweep]\nbase = "adxl345"\n[sweep.axes]\nadc_bits = { levels = [12] }\n'
+            '[benchmark]\nsensors = ["adxl357"]',
+            "benchmark.sensors is set by the sweep",
+        ),
+        (
+            '[sweep]\nbase = "adxl345"\n[sweep.axes]\nadc_bits = { levels = [12] }\n'
+            "[benchmark]\nrepeats = -1",
+            "repeats",
+        ),
+        ("[sweeps]\n", "unknown table"),
+    ],
+)
+def test_cli_bad_sweeps_are_one_line_before_any_work(tmp_path, body, message):
+    path = tmp_path / "sweep.toml"
+    path.write_text(textwrap.dedent(body))
+    out = tmp_path / "out"
+    result = subprocess.run(
+        [sys.executable, "-m", "sdt_framework", "explore", str(path), "--out", str(out)],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert result.returncode == 2, result.stderr
+    assert "Traceback" not in result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error:") and message in lines[0], lines
+    assert not out.exists()
