@@ -73,7 +73,7 @@ def test_a_point_equal_to_adxl345_reproduces_its_benchmark_exactly(tmp_path):
 
 
 def test_explore_writes_every_file_and_the_report_section(tmp_path):
-    explore, _, table, out = run_explore(tmp_path, {"report": True})
+    _, _, table, out = run_explore(tmp_path, {"report": True})
     for name in EXPLORE_FILES:
         assert (out / name).exists(), name
     assert set(table["role"]) == {"reference", "base", "point"}
@@ -117,7 +117,7 @@ def test_cli_example_prints_a_sweep_that_loads(tmp_path):
     path.write_text(result.output)
     from sdt_framework.explore import load_sweep
 
-    sweep, protocol = load_sweep(path)
+    sweep, _ = load_sweep(path)
     assert sweep.base == "adxl345" and "sampling_rate_hz" in sweep.axes
 
 
