@@ -10,7 +10,7 @@ from typing import Any
 
 import typer
 
-from .common import console, err_console, registry
+from .common import console, err_console, registry, table
 
 #: estimated runs above this many seconds need --yes
 CONFIRM_SECONDS = 3600.0
@@ -18,6 +18,24 @@ CONFIRM_SECONDS = 3600.0
 
 def _example() -> str:
     return resources.files("sdt_framework.explore").joinpath("example_sweep.toml").read_text()
+
+
+def _print_min_spec(min_spec: Any) -> None:
+    """The minimum specification per machine and scenario (best classifier), as a table."""
+    best = min_spec[min_spec["classifier"] == "best"]
+    if best.empty:
+        return
+    wide = best.pivot_table(
+        index=["machine", "scenario"], columns="parameter", values="min_level", dropna=False
+    )
+    rows = [
+        [machine, scenario, *("none" if v != v else f"{v:g}" for v in values)]
+        for (machine, scenario), values in zip(wide.index, wide.to_numpy(), strict=True)
+    ]
+    bases = best.drop_duplicates("parameter").set_index("parameter")["base_level"]
+    columns = [f"{p} (base {bases[p]:g})" for p in wide.columns]
+    title = f"Minimum specification: {best['target'].iloc[0]} (best classifier)"
+    table(title, ["machine", "scenario", *columns], rows)
 
 
 def explore(
@@ -98,14 +116,5 @@ def explore(
         from ..report import write_report
 
         write_report(out_dir, registry=reg)
-    spec = tables["min_spec"]
-    best = spec[spec["classifier"] == "best"]
-    for row in best.itertuples():
-        level = "none" if row.min_level != row.min_level else f"{row.min_level:g}"
-        console.print(
-            f"{row.machine} / {row.scenario}: least demanding {row.parameter} = {level} "
-            f"({row.target}; base {row.base_level:g})",
-            markup=False,
-            highlight=False,
-        )
+    _print_min_spec(tables["min_spec"])
     console.print(f"{len(results)} runs; exploration in {out_dir}", markup=False, highlight=False)

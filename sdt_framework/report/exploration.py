@@ -62,8 +62,12 @@ def _fig_effects(effects: pd.DataFrame, out: Path) -> Path:
                 capsize=2,
                 label=f"{machine} / {scenario}",
             )
-        if line["level"].min() > 0 and line["level"].max() / line["level"].min() >= 8:
+        levels = np.sort(best.loc[best["parameter"] == param, "level"].unique())
+        if levels.min() > 0 and levels.max() / levels.min() >= 8:
             ax.set_xscale("log")
+            ax.minorticks_off()
+        if len(levels) <= 8:
+            ax.set_xticks(levels, [f"{v:g}" for v in levels])
         ax.set_xlabel(param)
     axes[0].set_ylabel("Macro-F1 (best classifier)")
     axes[-1].legend(fontsize=7)
@@ -94,15 +98,8 @@ def _fig_sensitivity(ranking: pd.DataFrame, out: Path) -> Path:
         part = ranking[(ranking["machine"] == cell[0]) & (ranking["scenario"] == cell[1])]
         part = part.set_index("term").reindex(terms)
         x = np.arange(len(terms)) + i * width
-        err = np.vstack([part["value"] - part["ci_low"], part["ci_high"] - part["value"]])
-        ax.bar(
-            x,
-            part["value"],
-            width,
-            yerr=np.nan_to_num(np.abs(err)),
-            capsize=2,
-            label=f"{cell[0]} / {cell[1]}",
-        )
+        ax.bar(x, part["value"], width, label=f"{cell[0]} / {cell[1]}")
+        ax.vlines(x, part["ci_low"], part["ci_high"], color="black", linewidth=1)  # 95 % CI
     ax.set_xticks(np.arange(len(terms)) + 0.4 - width / 2, terms, rotation=20)
     ax.set_ylabel(str(ranking["index"].iloc[0]))
     ax.legend(fontsize=7)
