@@ -5,7 +5,9 @@ Entry points of the ``sdt_framework`` group are found and sorted by
 ``SDT_PLUGINS`` (load only these) and ``SDT_BLOCK_PLUGINS`` (never load these)
 select among them, matching a plugin's entry-point name or its distribution
 name. A plugin that fails to import becomes a :class:`PluginInfo` with status
-``error`` instead of crashing the program.
+``error`` instead of crashing the program. A switch naming nothing installed
+is reported (:func:`filter_warnings`), and an unknown name looked up while a
+switch left plugins out says so (:func:`filter_note`).
 """
 
 from __future__ import annotations
@@ -13,10 +15,11 @@ from __future__ import annotations
 import importlib.metadata as md
 import os
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from .errors import one_line, validation_summary
 from .hookspecs import PROJECT
 
 __all__ = [
@@ -26,6 +29,8 @@ __all__ = [
     "LoadedPlugin",
     "PluginInfo",
     "discover",
+    "filter_note",
+    "filter_warnings",
 ]
 
 ENV_ONLY = "SDT_PLUGINS"
@@ -40,9 +45,11 @@ class PluginInfo:
     name: str
     distribution: str
     version: str
-    status: str  # loaded | blocked | not selected | error | conflict
+    status: str  # loaded | partial | blocked | not selected | error | conflict
     error: str = ""
     provides: dict[str, list[str]] = field(default_factory=dict)
+    #: one line per spec the plugin registered that did not validate (not registered)
+    rejected: list[str] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready view."""
@@ -53,6 +60,7 @@ class PluginInfo:
             "status": self.status,
             "error": self.error,
             "provides": self.provides,
+            "rejected": self.rejected,
         }
 
 
@@ -68,11 +76,13 @@ def _norm(name: str) -> str:
     return re.sub(r"[-_.]+", "-", name).lower()
 
 
+def _listed(environ: Mapping[str, str], key: str) -> list[str]:
+    return [part.strip() for part in environ.get(key, "").split(",") if part.strip()]
+
+
 def _names(environ: Mapping[str, str], key: str) -> set[str] | None:
-    raw = environ.get(key)
-    if raw is None or not raw.strip():
-        return None
-    return {_norm(part) for part in raw.split(",") if part.strip()}
+    listed = _listed(environ, key)
+    return {_norm(part) for part in listed} if listed else None
 
 
 def _entry_points() -> list[md.EntryPoint]:
@@ -110,8 +120,53 @@ def discover(environ: Mapping[str, str] | None = None) -> list[LoadedPlugin | Pl
             obj = ep.load()
         except Exception as exc:
             info.status = "error"
-            info.error = f"import of {ep.value} failed: {type(exc).__name__}: {exc}"
+            info.error = f"import of {ep.value} failed: {validation_summary(exc)}"
             results.append(info)
             continue
         results.append(LoadedPlugin(obj, info))
     return results
+
+
+def filter_warnings(environ: Mapping[str, str], found: Sequence[PluginInfo]) -> list[str]:
+    """One line per switch that names plugins no installed entry point has.
+
+    ``found`` is every plugin discovery saw (loaded or not). A misspelled name
+    in ``SDT_PLUGINS`` would otherwise load nothing without a word, and one in
+    ``SDT_BLOCK_PLUGINS`` would block nothing.
+    """
+    known = {_norm(p.name) for p in found} | {_norm(p.distribution) for p in found}
+    installed = ", ".join(sorted({p.name for p in found})) or "(none)"
+    lines = []
+    for key in (ENV_ONLY, ENV_BLOCK):
+        unknown = [name for name in _listed(environ, key) if _norm(name) not in known]
+        if not unknown:
+            continue
+        effect = "nothing is blocked by them"
+        if key == ENV_ONLY:
+            matched = len(_listed(environ, key)) > len(unknown)
+            effect = "only the other names are loaded" if matched else "no plugin is loaded"
+        lines.append(
+            f"{key}={one_line(environ[key], 80)!r}: no installed plugin or distribution is "
+            f"called {', '.join(repr(one_line(n, 40)) for n in unknown)}, so {effect}; "
+            f"installed plugins: {installed}"
+        )
+    return lines
+
+
+def filter_note(environ: Mapping[str, str], found: Sequence[PluginInfo]) -> str:
+    """A sentence saying which switch left which plugins out ('' when none did)."""
+    left_out = [p.name for p in found if p.status in {"blocked", "not selected"}]
+    if not left_out:
+        return ""
+    active = " and ".join(
+        f"{key}={one_line(environ[key], 80)!r}"
+        for key in (ENV_ONLY, ENV_BLOCK)
+        if environ.get(key, "").strip()
+    )
+    shown = ", ".join(left_out[:8]) + (
+        f" and {len(left_out) - 8} more" if len(left_out) > 8 else ""
+    )
+    return (
+        f"A plugin filter is active ({active}) and left out: {shown}; "
+        f"unset it or let through the plugin that provides this name."
+    )

@@ -10,30 +10,57 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterable
 
+from pydantic import ValidationError
+
 __all__ = [
+    "ArgumentTypeError",
+    "ArgumentValueError",
     "DuplicateNameError",
     "PluginLoadError",
     "SDTError",
     "SpecFileError",
     "UnknownNameError",
+    "UserInterruptError",
+    "one_line",
+    "validation_summary",
 ]
 
 
 class SDTError(Exception):
-    """A problem in the user's input, configuration or environment."""
+    """A problem in the user's input, configuration or environment.
+
+    ``exit_code`` is the status the CLI exits with after printing the message.
+    """
+
+    exit_code: int = 2
+
+
+class UserInterruptError(SDTError):
+    """The user stopped the command (Ctrl-C); the CLI exits with status 130."""
+
+    exit_code = 130
+
+
+class ArgumentTypeError(SDTError, TypeError):
+    """A Python API argument of the wrong type (also a :class:`TypeError`)."""
+
+
+class ArgumentValueError(SDTError, ValueError):
+    """A Python API argument of the right type but an unusable value (also a ValueError)."""
 
 
 class UnknownNameError(SDTError, KeyError):
     """A name that no registered plugin provides."""
 
-    def __init__(self, kind: str, name: str, available: Iterable[str]) -> None:
+    def __init__(self, kind: str, name: str, available: Iterable[str], *, note: str = "") -> None:
         self.kind = kind
         self.name = name
         self.available = sorted(available)
         close = difflib.get_close_matches(name, self.available, n=1, cutoff=0.5)
         hint = f" Did you mean {close[0]!r}?" if close else ""
         listed = ", ".join(self.available) if self.available else "(none registered)"
-        super().__init__(f"unknown {kind} {name!r}.{hint} Available: {listed}.")
+        tail = f" {note}" if note else ""
+        super().__init__(f"unknown {kind} {name!r}.{hint} Available: {listed}.{tail}")
 
     def __str__(self) -> str:  # KeyError would otherwise quote the message
         return str(self.args[0])
@@ -70,3 +97,27 @@ class SpecFileError(SDTError):
         self.reason = reason
         where = f" field {field!r}:" if field else ""
         super().__init__(f"{self.path}:{where} {reason}")
+
+
+def one_line(text: object, limit: int = 300) -> str:
+    """``text`` on one line (whitespace runs made one space), at most ``limit`` characters."""
+    flat = " ".join(str(text).split())
+    return flat if len(flat) <= limit else flat[: limit - 3] + "..."
+
+
+def validation_summary(exc: Exception) -> str:
+    """One line naming each invalid field of a pydantic ``ValidationError`` and why.
+
+    Other exceptions give ``"TypeName: message"`` on one line. The offending
+    values are not quoted (they may be long); the field names are.
+    """
+    if not isinstance(exc, ValidationError):
+        return one_line(f"{type(exc).__name__}: {exc}")
+    parts = []
+    for error in exc.errors():
+        field = ".".join(str(part) for part in error.get("loc", ()))
+        reason = str(error.get("msg", "invalid")).removeprefix("Value error, ")
+        if error.get("type") == "extra_forbidden":
+            reason = "unknown field"
+        parts.append(f"field {field!r}: {reason}" if field else reason)
+    return one_line("; ".join(parts))

@@ -19,8 +19,8 @@ import pluggy
 from pydantic import ValidationError
 
 from . import hookspecs
-from .discovery import ENV_TRACE, LoadedPlugin, PluginInfo, discover
-from .errors import DuplicateNameError, PluginLoadError, UnknownNameError
+from .discovery import ENV_TRACE, LoadedPlugin, PluginInfo, discover, filter_note, filter_warnings
+from .errors import DuplicateNameError, PluginLoadError, UnknownNameError, validation_summary
 from .sensor_files import load_sensor_file, sensor_files_from_env
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
 
@@ -53,6 +53,10 @@ class Registry:
         self._plugins: list[PluginInfo] = []
         self._conflicts: dict[tuple[type[Spec], str], DuplicateNameError] = {}
         self._trace = trace
+        #: appended to unknown-name errors while SDT_PLUGINS / SDT_BLOCK_PLUGINS left plugins out
+        self.filter_note = ""
+        #: SDT_PLUGINS / SDT_BLOCK_PLUGINS entries that name nothing installed
+        self.filter_warnings: list[str] = []
 
     # -- registration -----------------------------------------------------------------
     def register_plugin(
@@ -67,7 +71,9 @@ class Registry:
 
         Hook implementations whose argument names are not in the spec are
         rejected by pluggy; a misspelled hook name is rejected here. A hook
-        that raises marks the plugin ``error`` and registers nothing of it.
+        that raises marks the plugin ``error`` and registers nothing of it. An
+        invalid spec is one line in ``info.rejected`` and is not registered;
+        the plugin's valid specs are (status ``partial``).
         """
         name = name or getattr(plugin, "__name__", None) or type(plugin).__name__
         info = PluginInfo(name, distribution, version, "loaded")
@@ -97,22 +103,26 @@ class Registry:
         return staged  # type: ignore[return-value]
 
     def _stage(self, kind: type[Spec], spec: Any, info: PluginInfo, staged: list[Spec]) -> None:
+        """Validate ``spec`` and stage it, or raise a one-line :class:`PluginLoadError`."""
+        reason = self._offer(kind, spec, info, staged)
+        if reason:
+            raise PluginLoadError(info.name, info.distribution, reason)
+
+    @staticmethod
+    def _offer(kind: type[Spec], spec: Any, info: PluginInfo, staged: list[Spec]) -> str:
+        """Stage a validated, stamped copy of ``spec``; return why it is invalid, or ''."""
         if isinstance(spec, Mapping):
             try:
                 spec = kind.model_validate(dict(spec))
             except ValidationError as exc:
-                raise PluginLoadError(
-                    info.name, info.distribution, f"invalid {kind.kind}: {exc}"
-                ) from None
+                name = " ".join(str(spec.get("name", "?")).split())[:60]
+                return f"invalid {kind.kind} {name!r}: {validation_summary(exc)}"
         if not isinstance(spec, kind):
-            raise PluginLoadError(
-                info.name,
-                info.distribution,
-                f"registered {type(spec).__name__}, expected {kind.__name__}",
-            )
+            return f"registered {type(spec).__name__}, expected {kind.__name__}"
         staged.append(
             spec.model_copy(update={"plugin": info.name, "distribution": info.distribution})
         )
+        return ""
 
     def _commit(self, staged: list[Spec], info: PluginInfo) -> None:
         for spec in staged:
@@ -140,19 +150,30 @@ class Registry:
             self._fail(loaded, f"invalid hook implementation: {exc}")
             return info
         staged: list[Spec] = []
+
+        def offer(spec: Any, kind: type[Spec]) -> None:
+            reason = self._offer(kind, spec, info, staged)
+            if reason:
+                info.rejected.append(f"{reason}; not registered, the plugin's other specs are kept")
+
         for hook_name, kind in HOOKS.items():
             hook = getattr(self._pm.hook, hook_name)
             for impl in hook.get_hookimpls():
                 if impl.plugin is not loaded.obj:
                     continue
                 try:
-                    impl.function(register=lambda spec, k=kind: self._stage(k, spec, info, staged))
-                except PluginLoadError as exc:
-                    self._fail(loaded, exc.reason)
-                    return info
+                    impl.function(register=lambda spec, k=kind: offer(spec, k))
+                except ValidationError as exc:  # the plugin built an invalid spec itself
+                    info.rejected.append(
+                        f"{hook_name} built an invalid {exc.title}: {validation_summary(exc)}; "
+                        f"the hook stopped there, specs it registered before are kept"
+                    )
                 except Exception as exc:
-                    self._fail(loaded, f"{hook_name} raised {type(exc).__name__}: {exc}")
+                    self._fail(loaded, f"{hook_name} raised {validation_summary(exc)}")
                     return info
+        if info.rejected:
+            info.status = "partial" if staged else "error"
+            info.error = "; ".join(info.rejected)
         self._commit(staged, info)
         self._plugins.append(info)
         return info
@@ -172,7 +193,9 @@ class Registry:
         try:
             return self._items[kind][name]  # type: ignore[return-value]
         except KeyError:
-            raise UnknownNameError(kind.kind, name, self._items[kind]) from None
+            raise UnknownNameError(
+                kind.kind, name, self._items[kind], note=self.filter_note
+            ) from None
 
     def _all(self, kind: type[S]) -> list[S]:
         return [self._items[kind][key] for key in sorted(self._items[kind])]  # type: ignore[misc]
@@ -214,12 +237,15 @@ class Registry:
         return list(self._plugins)
 
     def problems(self) -> list[str]:
-        """One line per plugin that failed or conflicted, for warnings."""
-        return [
-            f"plugin {p.name!r} ({p.distribution}): {p.error}"
-            for p in self._plugins
-            if p.status in {"error", "conflict"}
-        ]
+        """One line per plugin switch naming nothing installed, per plugin that failed or
+        conflicted, and per invalid spec a plugin registered: the CLI prints them as warnings."""
+        lines = list(self.filter_warnings)
+        for p in self._plugins:
+            head = f"plugin {p.name!r} ({p.distribution})"
+            lines += [f"{head}: {reason}" for reason in p.rejected]
+            if p.status == "conflict" or (p.status == "error" and not p.rejected):
+                lines.append(f"{head}: {p.error}")
+        return lines
 
     def check(self) -> None:
         """Raise the first duplicate-name conflict, if any."""
@@ -250,11 +276,15 @@ def build_registry(
     environ = os.environ if environ is None else environ
     registry = Registry(trace=bool(environ.get(ENV_TRACE)))
     if entry_points:
-        for found in discover(environ):
-            if isinstance(found, LoadedPlugin):
-                registry._collect(found)
+        found = discover(environ)
+        infos = [item.info if isinstance(item, LoadedPlugin) else item for item in found]
+        registry.filter_warnings = filter_warnings(environ, infos)
+        registry.filter_note = filter_note(environ, infos)
+        for item in found:
+            if isinstance(item, LoadedPlugin):
+                registry._collect(item)
             else:
-                registry._plugins.append(found)
+                registry._plugins.append(item)
     for plugin in plugins:
         registry.register_plugin(plugin)
     for path in [*sensor_files_from_env(environ), *sensor_files]:

@@ -20,6 +20,7 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator, model_valida
 __all__ = [
     "ClassifierSpec",
     "DatasetSpec",
+    "FeatureBand",
     "FeatureSetSpec",
     "SensorSpec",
     "Spec",
@@ -115,6 +116,29 @@ class SensorSpec(Spec):
         return 2.0 * self.full_scale_g / 2.0**self.adc_bits
 
 
+class FeatureBand(BaseModel):
+    """A frequency band some features of a set are computed over (SPEC section 3).
+
+    Declared by the feature set, checked by the framework: extraction refuses a
+    rate at which the band holds no FFT bin of a window, instead of letting the
+    features come out as zeros.
+    """
+
+    model_config = ConfigDict(frozen=True, extra="forbid")
+
+    features: tuple[str, ...] = Field(min_length=1, description="Features computed over it.")
+    low_hz: float = Field(ge=0, description="Lower edge, Hz (inclusive).")
+    high_hz: float | None = Field(
+        default=None, gt=0, description="Upper edge, Hz (inclusive); None: the Nyquist frequency."
+    )
+
+    def describe(self) -> str:
+        """The band in words: ``"10-1000 Hz"`` or ``"10 Hz to Nyquist"``."""
+        if self.high_hz is None:
+            return f"{self.low_hz:g} Hz to Nyquist"
+        return f"{self.low_hz:g}-{self.high_hz:g} Hz"
+
+
 class FeatureSetSpec(Spec):
     """A named set of features computed on a batch of windows.
 
@@ -131,6 +155,10 @@ class FeatureSetSpec(Spec):
         exclude=True, description="compute(windows, fs) -> array (n_windows, n_features)."
     )
     bytes_per_value: int = Field(default=4, ge=1, description="Edge payload per value (float32).")
+    bands: tuple[FeatureBand, ...] = Field(
+        default=(),
+        description="Frequency bands the features need; a rate leaving one empty is refused.",
+    )
 
     @model_validator(mode="after")
     def _check_lengths(self) -> FeatureSetSpec:
@@ -138,6 +166,11 @@ class FeatureSetSpec(Spec):
             raise ValueError(f"{len(self.feature_names)} feature_names but {len(self.units)} units")
         if len(set(self.feature_names)) != len(self.feature_names):
             raise ValueError(f"duplicate feature names in {self.feature_names}")
+        for band in self.bands:
+            if not set(band.features) <= set(self.feature_names):
+                raise ValueError(f"band {band.describe()} names unknown features {band.features}")
+            if band.high_hz is not None and band.high_hz <= band.low_hz:
+                raise ValueError(f"band {band.describe()}: high_hz must be above low_hz")
         return self
 
     @property
@@ -146,8 +179,13 @@ class FeatureSetSpec(Spec):
         return self.bytes_per_value * len(self.feature_names)
 
     def content_dict(self) -> dict[str, Any]:
-        """Behaviour-defining fields plus the compute function's qualified name."""
+        """Behaviour-defining fields plus the compute function's qualified name.
+
+        ``bands`` is left out: it decides which rates are refused, not the
+        values computed, so declaring it keeps cache keys and results folders valid.
+        """
         data = super().content_dict()
+        data.pop("bands", None)
         data["compute"] = f"{self.compute.__module__}:{self.compute.__qualname__}"
         return data
 

@@ -13,6 +13,7 @@ import scipy.fft
 
 from sdt_framework import FeatureSetSpec, hookimpl
 from sdt_framework.hookspecs import Register
+from sdt_framework.specs import FeatureBand
 
 G = 9.80665  # m/s^2 per g
 BAND_ACC_LOW_HZ = 10.0
@@ -88,6 +89,10 @@ PAPER8 = FeatureSetSpec(
     feature_names=("sigma", "S", "K", "CF", "A_RMS", "A_Peak", "V_RMS", "D_RMS"),
     units=("g", "1", "1", "1", "g", "g", "mm/s", "um"),
     compute=compute,
+    bands=(  # the framework refuses a rate leaving one of them without an FFT bin
+        FeatureBand(features=("A_RMS", "A_Peak"), low_hz=BAND_ACC_LOW_HZ),
+        FeatureBand(features=("V_RMS", "D_RMS"), low_hz=BAND_KIN_HZ[0], high_hz=BAND_KIN_HZ[1]),
+    ),
 )
 
 

@@ -10,14 +10,15 @@ LowPass, Sample, WhiteNoise, Quantise, Stage, RunContext
     The stages, each usable on its own, and the protocol a new stage follows.
 noise_check(sensor, ...), NoiseCheck, plot_noise_check(result, path)
     The zero-motion noise validation of paper section 3.1 / Table 2.
-ChainInputError
-    The one-line error for a recording or rate the chain cannot take.
+ChainInputError, ChainInputTypeError
+    The one-line error for a recording or rate the chain cannot take (the second
+    one, for samples that are not real numbers, is also a TypeError).
 """
 
 from __future__ import annotations
 
 from .chain import Chain, build_stages, compile_chain, degrade
-from .errors import ChainInputError
+from .errors import ChainInputError, ChainInputTypeError
 from .filters import design_lowpass, is_skipped, lowpass_gain
 from .noise_check import NoiseCheck, WindowStats, noise_check, window_stats
 from .noise_plot import plot_noise_check
@@ -26,6 +27,7 @@ from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise, sa
 __all__ = [
     "Chain",
     "ChainInputError",
+    "ChainInputTypeError",
     "LowPass",
     "NoiseCheck",
     "Quantise",

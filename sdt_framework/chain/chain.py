@@ -18,6 +18,7 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..api import check_real, check_seed, resolve
 from ..specs import SensorSpec
 from .errors import check_rates, check_signal
 from .filters import design_lowpass
@@ -153,7 +154,7 @@ def compile_chain(sensor: SensorSpec, fs: float, *, label: str = "") -> Chain:
 def degrade(
     x: ArrayLike,
     fs: float,
-    sensor: SensorSpec,
+    sensor: SensorSpec | str,
     seed: int = 0,
     *,
     noise: bool = True,
@@ -168,13 +169,17 @@ def degrade(
     ----------
     x
         One acquisition (1-D) or a batch (2-D, acquisitions x samples), in g,
-        each row one whole continuous acquisition at ``fs``.
+        each row one whole continuous acquisition at ``fs``; real numbers
+        (int or float: booleans, complex, objects and text are refused).
     fs
-        Recording rate F_ref, Hz.
+        Recording rate F_ref, Hz (a real number).
     sensor
-        The profile; its chain is compiled once per (profile, ``fs``).
+        The profile, or the name of a registered one (``"adxl345"``, looked up
+        in :func:`sdt_framework.api.default_registry`); its chain is compiled
+        once per (profile, ``fs``).
     seed
-        Base seed; row i's noise comes from ``seeding.rng(seed, id_i)``.
+        Base seed, an integer (1.5, "3" or True are refused, not rounded);
+        row i's noise comes from ``seeding.rng(seed, id_i)``.
     noise
         False switches the noise stage off for this call.
     label
@@ -190,7 +195,19 @@ def degrade(
     -------
     (numpy.ndarray, float)
         float64 output with the same number of dimensions as ``x``, and its rate.
+
+    Raises
+    ------
+    sdt_framework.errors.ArgumentTypeError
+        (a TypeError) ``sensor``, ``seed`` or ``fs`` of a wrong type.
+    sdt_framework.chain.ChainInputTypeError
+        (a TypeError and a ChainInputError) ``x`` not holding real numbers.
+    sdt_framework.chain.ChainInputError
+        A signal or rate the chain cannot take (shape, NaN, rate below the target).
     """
+    sensor = resolve(SensorSpec, sensor, "sensor")
+    seed = check_seed(seed)
+    fs = check_real(fs, "fs", "Hz")
     arr = check_signal(x, sensor, label)
     chain = compile_chain(sensor, fs, label=label)
     batch = np.atleast_2d(arr)
@@ -200,7 +217,7 @@ def degrade(
         ids = tuple(acquisition_ids)
         if len(ids) != batch.shape[0]:
             raise ValueError(f"{len(ids)} acquisition_ids for {batch.shape[0]} acquisitions")
-    ctx = RunContext(seed=int(seed), acquisition_ids=ids, noise=noise)
+    ctx = RunContext(seed=seed, acquisition_ids=ids, noise=noise)
     if threads is not None:
         ctx = replace(ctx, threads=max(1, int(threads)))
     out = chain.run(batch, ctx)

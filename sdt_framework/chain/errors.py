@@ -12,10 +12,11 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..api import describe_dtype
 from ..errors import SDTError
 from ..specs import SensorSpec
 
-__all__ = ["ChainInputError", "check_rates", "check_signal"]
+__all__ = ["ChainInputError", "ChainInputTypeError", "check_rates", "check_signal"]
 
 
 class ChainInputError(SDTError):
@@ -28,17 +29,24 @@ class ChainInputError(SDTError):
         super().__init__(f"sensor {sensor!r}, recording {label or '<array>'!r}: {reason}")
 
 
+class ChainInputTypeError(ChainInputError, TypeError):
+    """Samples that are not real numbers (booleans, complex, objects, text): also a TypeError."""
+
+
 def check_signal(x: ArrayLike, sensor: SensorSpec, label: str) -> NDArray[np.float64]:
     """Return ``x`` as a float64 array of 1 or 2 dimensions, or raise.
 
-    Rejected: non-numeric or complex data, 0-D or 3-D+ arrays, empty signals,
+    Rejected: booleans, complex, object or text data, 0-D or 3-D+ arrays, empty signals,
     fewer than 2 samples (linear interpolation needs two), NaN or inf samples
     (their count and first index are reported).
     """
     arr = np.asarray(x)
-    if arr.dtype.kind not in "biuf":
-        raise ChainInputError(
-            sensor.name, label, f"samples must be real numbers, got dtype {arr.dtype}"
+    if arr.dtype.kind not in "iuf":
+        raise ChainInputTypeError(
+            sensor.name,
+            label,
+            f"samples must be real numbers (int or float), got {describe_dtype(arr.dtype)}; "
+            f"convert x first, e.g. np.asarray(x, dtype=float)",
         )
     if arr.ndim not in (1, 2):
         raise ChainInputError(

@@ -128,7 +128,7 @@ def benchmark(
     plan = plan_benchmark(config, registry(ctx))
     out_dir = out or Path("results") / dt.datetime.now().strftime("%Y%m%d-%H%M%S")
     for (machine, scenario), reason in sorted(plan.skipped.items()):
-        err_console.print(f"[yellow]skipped[/] {machine} / {scenario}: {reason}")
+        err_console.print(f"skipped {machine} / {scenario}: {reason}", highlight=False)
     console.print(
         f"{plan.dataset.name}: {len(plan.recordings)} recordings, {len(plan.sensors)} sensors, "
         f"{len(plan.classifiers)} classifiers, {len(config.scenarios)} scenarios, "

@@ -1,4 +1,11 @@
-"""Helpers shared by every ``sdt`` command: registry access, output, errors."""
+"""Helpers shared by every ``sdt`` command: registry access, output, errors.
+
+Both consoles print text as given: rich markup (``[bold]``, ``[/]``) and emoji
+codes (``:x:``) are not interpreted, so a file called ``run[bold].npy`` or
+``a:x:b.npy`` prints as itself and a message holding ``[/]`` cannot crash the
+printer. Styled labels are built as :class:`rich.text.Text` (:func:`warn`,
+:func:`print_error`), never by formatting a user string into markup.
+"""
 
 from __future__ import annotations
 
@@ -10,13 +17,24 @@ from typing import Any
 import typer
 from rich.console import Console
 from rich.table import Table
+from rich.text import Text
 
 from ..registry import Registry, build_registry
 
-__all__ = ["console", "err_console", "print_json", "registry", "table"]
+__all__ = ["console", "err_console", "print_error", "print_json", "registry", "table", "warn"]
 
-console = Console()
-err_console = Console(stderr=True)
+console = Console(markup=False, emoji=False)
+err_console = Console(stderr=True, markup=False, emoji=False)
+
+
+def print_error(message: str, label: str = "error:", style: str = "bold red") -> None:
+    """Print ``label message`` on one line to stderr, ``message`` exactly as given."""
+    err_console.print(Text.assemble((label, style), " ", message), highlight=False, soft_wrap=True)
+
+
+def warn(message: str, label: str = "warning:") -> None:
+    """Print a yellow ``warning:`` line to stderr, ``message`` exactly as given."""
+    print_error(message, label=label, style="yellow")
 
 
 def registry(ctx: typer.Context) -> Registry:
@@ -27,7 +45,7 @@ def registry(ctx: typer.Context) -> Registry:
         files: list[Path] = root.obj.get("sensor_files", [])
         reg = build_registry(sensor_files=files)
         for line in reg.problems():
-            err_console.print(f"[yellow]warning:[/] {line}", highlight=False)
+            warn(line)
         root.obj["registry"] = reg
     return root.obj["registry"]
 
@@ -38,7 +56,7 @@ def print_json(data: Any) -> None:
 
 
 def table(title: str, columns: list[str], rows: list[list[Any]]) -> None:
-    """Print a rich table."""
+    """Print a rich table; cells and title are plain text (no markup, no emoji codes)."""
     out = Table(title=title, title_justify="left")
     for index, column in enumerate(columns):
         out.add_column(column, no_wrap=index == 0)  # names stay whole

@@ -6,7 +6,6 @@ from pathlib import Path
 from typing import Annotated, Any
 
 import typer
-from rich.markup import escape
 
 from ..errors import SDTError
 from .common import console, print_json, registry, table
@@ -43,8 +42,7 @@ def list_features(
     rows = [
         [
             s.name,
-            # escaped: rich would read "[g]" as a markup tag and drop it
-            escape(", ".join(f"{n} [{u}]" for n, u in zip(s.feature_names, s.units, strict=True))),
+            ", ".join(f"{n} [{u}]" for n, u in zip(s.feature_names, s.units, strict=True)),
             s.bytes_per_window,
             3 * s.bytes_per_window,
             s.distribution,

@@ -2,18 +2,16 @@
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import typer
 
-from ..errors import SDTError
 from . import classifiers, features, plugins, sensors
 from . import dataset as dataset_cli
 from .benchmark import benchmark
 from .chain import register as register_chain_commands
-from .common import err_console
 from .explore import explore
+from .failures import InterruptibleGroup, run
 from .report import report
 
 app = typer.Typer(
@@ -22,6 +20,7 @@ app = typer.Typer(
     no_args_is_help=True,
     pretty_exceptions_enable=False,
     rich_markup_mode="rich",
+    cls=InterruptibleGroup,
 )
 app.add_typer(plugins.app, name="plugins")
 app.add_typer(sensors.app, name="sensors")
@@ -56,9 +55,6 @@ def root(
 
 
 def main() -> None:
-    """Run ``sdt``; a user error prints one line and exits with status 2."""
-    try:
-        app()
-    except SDTError as exc:
-        err_console.print(f"[bold red]error:[/] {exc}", highlight=False, soft_wrap=True)
-        sys.exit(2)
+    """Run ``sdt``; a user or environment error prints one line and exits with status 2,
+    Ctrl-C exits with 130 (see :mod:`sdt_framework.cli.failures`)."""
+    run(app)

@@ -5,7 +5,10 @@ Public API
 cut_windows, Windows
     Non-overlapping 0.64 s windows after a 0.1 s settling discard, per acquisition.
 extract, FeatureExtractor, FeatureTable
-    Validate a signal, window and centre it, compute a feature set, check the result.
+    Validate a signal, window and centre it, compute a feature set, check the result;
+    the feature set may be given by name (``extract(y, fs, "paper8")``).
+check_bands, check_feature_output
+    The checks extraction runs: declared frequency bands non-empty at the rate; compute output.
 feature, Feature
     Decorator turning ``f(windows, fs) -> (n_windows,)`` into a registrable feature.
 compose, resolve_feature_set
@@ -16,8 +19,9 @@ read_feature_table, write_feature_table
 
 from __future__ import annotations
 
+from .checks import check_bands, check_feature_output
 from .compose import ComposedFeatureSetSpec, compose, resolve_feature_set
-from .extract import FeatureExtractor, check_feature_output, extract
+from .extract import FeatureExtractor, extract
 from .table import FeatureTable, read_feature_table, write_feature_table
 from .user import Feature, feature
 from .windowing import SETTLE_S, WINDOW_S, Windows, cut_windows, samples_for
@@ -30,6 +34,7 @@ __all__ = [
     "FeatureExtractor",
     "FeatureTable",
     "Windows",
+    "check_bands",
     "check_feature_output",
     "compose",
     "cut_windows",

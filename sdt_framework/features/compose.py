@@ -16,7 +16,7 @@ from pydantic import Field, field_validator
 
 from ..errors import SDTError
 from ..specs import _NAME, FeatureSetSpec
-from .extract import check_feature_output
+from .checks import check_feature_output
 
 if TYPE_CHECKING:
     from ..registry import Registry
@@ -96,6 +96,7 @@ def compose(parts: Sequence[FeatureSetSpec]) -> FeatureSetSpec:
         units=tuple(u for p in parts for u in p.units),
         compute=compute,
         parts=parts,
+        bands=tuple(band for p in parts for band in p.bands),
     )
 
 

@@ -15,81 +15,27 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import SDTError
+from ..api import check_rate, default_registry
+from ..errors import ArgumentTypeError, SDTError
 from ..specs import FeatureSetSpec
+from .checks import check_bands, check_feature_output, check_signal
+from .compose import resolve_feature_set
 from .table import FeatureTable
 from .windowing import SETTLE_S, WINDOW_S, cut_windows
 
 __all__ = ["FeatureExtractor", "check_feature_output", "extract"]
 
 
-def check_feature_output(values: object, n_windows: int, spec: FeatureSetSpec) -> np.ndarray:
-    """Validate a compute result and return it as float32.
-
-    Parameters
-    ----------
-    values
-        What ``spec.compute`` returned.
-    n_windows
-        Number of windows it was given.
-    spec
-        The feature set, named in every error.
-
-    Raises
-    ------
-    SDTError
-        Non-numeric values, a shape other than (n_windows, n_features), or a
-        non-finite value (the message names the feature and the window).
-    """
-    where = f"feature set {spec.name!r} ({', '.join(spec.feature_names)})"
-    try:
-        array = np.asarray(values)
-    except (TypeError, ValueError) as exc:
-        raise SDTError(
-            f"{where}: compute returned something that is not an array ({exc})"
-        ) from None
-    if array.dtype.kind not in "fiu":
-        raise SDTError(
-            f"{where}: compute returned dtype {array.dtype} ({type(values).__name__}); "
-            f"expected real numbers (float32, or float64 which is cast)"
-        )
-    expected = (n_windows, len(spec.feature_names))
-    if array.shape != expected:
-        raise SDTError(
-            f"{where}: compute returned shape {array.shape}, expected {expected} "
-            f"(n_windows, n_features)"
-        )
-    with np.errstate(over="ignore", invalid="ignore"):
-        out = array.astype(np.float32, copy=False)
-    bad = ~np.isfinite(out)
-    if bad.any():
-        row, col = (int(i) for i in np.argwhere(bad)[0])
-        raise SDTError(
-            f"{where}: feature {spec.feature_names[col]!r} is {float(array[row, col])!r} in window "
-            f"{row} (not finite in float32); {int(bad.sum())} bad value(s) in total"
-        )
-    return out
-
-
-def _check_signal(x: object) -> np.ndarray:
-    array = np.asarray(x)
-    if array.ndim not in (1, 2):
-        raise SDTError(
-            f"expected a 1-D signal or a 2-D array (acquisitions x samples), got "
-            f"{array.ndim}-D shape {array.shape}"
-        )
-    if array.dtype.kind not in "fiu":
-        raise SDTError(f"signal must be real numbers, got dtype {array.dtype}")
-    finite = np.isfinite(array)
-    if not finite.all():
-        index = tuple(int(i) for i in np.argwhere(~finite)[0])
-        where = (
-            f"sample {index[0]}"
-            if array.ndim == 1
-            else f"acquisition {index[0]}, sample {index[1]}"
-        )
-        raise SDTError(f"signal has a non-finite value {float(array[index])!r} at {where}")
-    return array
+def _feature_set(value: object) -> FeatureSetSpec:
+    """A spec as is; a name (``"paper8"``, ``"paper8+env_bpfo"``) from the default registry."""
+    if isinstance(value, FeatureSetSpec):
+        return value
+    if isinstance(value, str):
+        return resolve_feature_set(default_registry(), value)
+    raise ArgumentTypeError(
+        f"feature_set must be a FeatureSetSpec or the name of a registered feature set "
+        f"(str, e.g. 'paper8'), got {type(value).__name__}"
+    )
 
 
 class FeatureExtractor:
@@ -98,15 +44,21 @@ class FeatureExtractor:
     Parameters
     ----------
     feature_set
-        The feature set (a registered or composed :class:`FeatureSetSpec`).
+        The feature set (a registered or composed :class:`FeatureSetSpec`), or
+        its name (``"paper8"``, ``"paper8+env_bpfo"``), looked up in
+        :func:`sdt_framework.api.default_registry`.
     window_s, settle_s
         Window length and settling interval, seconds (SPEC: 0.64 and 0.1).
     """
 
     def __init__(
-        self, feature_set: FeatureSetSpec, *, window_s: float = WINDOW_S, settle_s: float = SETTLE_S
+        self,
+        feature_set: FeatureSetSpec | str,
+        *,
+        window_s: float = WINDOW_S,
+        settle_s: float = SETTLE_S,
     ) -> None:
-        self.feature_set = feature_set
+        self.feature_set = _feature_set(feature_set)
         self.window_s = window_s
         self.settle_s = settle_s
 
@@ -121,7 +73,8 @@ class FeatureExtractor:
         ----------
         x
             One acquisition (1-D) or several (2-D, one per row), in the
-            feature set's input unit (g for ``paper8``), sampled at ``fs``.
+            feature set's input unit (g for ``paper8``), sampled at ``fs``;
+            real numbers (booleans, complex, objects and text are refused).
         fs
             Sampling rate, Hz.
 
@@ -129,9 +82,19 @@ class FeatureExtractor:
         -------
         FeatureTable
             float32 values, one row per window, with names, units and indices.
+
+        Raises
+        ------
+        ArgumentTypeError
+            (a TypeError) ``x`` or ``fs`` of a wrong type.
+        SDTError
+            A bad signal, or a rate at which a band the feature set declares is
+            empty (paper8: 10 Hz to Nyquist, 10-1000 Hz).
         """
-        signal = _check_signal(x)
+        fs = check_rate(fs)
+        signal = check_signal(x)
         cut = cut_windows(signal, fs, window_s=self.window_s, settle_s=self.settle_s)
+        check_bands(self.feature_set, fs, cut.length)
         # One vectorised pass: float64 copy, each window minus its own mean.
         centred = cut.data - cut.data.mean(axis=1, keepdims=True, dtype=np.float64)
         try:
@@ -158,7 +121,7 @@ class FeatureExtractor:
 def extract(
     x: np.ndarray,
     fs: float,
-    feature_set: FeatureSetSpec,
+    feature_set: FeatureSetSpec | str,
     *,
     window_s: float = WINDOW_S,
     settle_s: float = SETTLE_S,
@@ -167,7 +130,7 @@ def extract(
 
     Examples
     --------
-    >>> table = extract(signal_g, 3200.0, registry.feature_set("paper8"))  # doctest: +SKIP
+    >>> table = extract(signal_g, 3200.0, "paper8")  # doctest: +SKIP
     >>> table.to_frame().head()  # doctest: +SKIP
     """
     return FeatureExtractor(feature_set, window_s=window_s, settle_s=settle_s).extract(x, fs)

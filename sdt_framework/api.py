@@ -1,0 +1,128 @@
+"""Argument checks and name lookup shared by the public Python API.
+
+``degrade(x, fs, "adxl345")`` and ``extract(y, fs, "paper8")`` take a spec or a
+registered name; a name is looked up in :func:`default_registry`, built once on
+first use (entry points, ``SDT_SENSOR_PATH`` and the ``SDT_*`` switches of the
+environment at that moment). The checks below run once at the API boundary, so
+a wrong type fails with a :class:`TypeError` naming the argument instead of
+being silently converted (``int(1.5)``, ``int("3")``, ``float(True)``) or failing
+deep inside numpy. Each error is also an :class:`~sdt_framework.errors.SDTError`,
+so the CLI prints it as one line.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import numbers
+from typing import TypeVar
+
+import numpy as np
+
+from .errors import ArgumentTypeError, ArgumentValueError, one_line
+from .registry import Registry, build_registry
+from .specs import Spec
+
+__all__ = [
+    "check_rate",
+    "check_real",
+    "check_seed",
+    "default_registry",
+    "describe_dtype",
+    "real_array",
+    "resolve",
+]
+
+S = TypeVar("S", bound=Spec)
+
+#: dtype kinds a signal may have: signed and unsigned integers, floats
+_REAL_KINDS = "iuf"
+_KIND_NAMES = {"b": "booleans", "c": "complex numbers", "O": "Python objects", "U": "text"}
+
+
+@functools.cache
+def default_registry() -> Registry:
+    """The registry names are resolved in, built on first use and then reused.
+
+    Call ``default_registry.cache_clear()`` to rebuild it (after installing a
+    plugin or changing ``SDT_PLUGINS`` in a running session).
+    """
+    return build_registry()
+
+
+def resolve(kind: type[S], value: object, argument: str) -> S:
+    """``value`` itself if it is a ``kind`` spec, the registered one if it is a name.
+
+    Raises
+    ------
+    ArgumentTypeError
+        Anything else (also a :class:`TypeError`), naming ``argument`` and the accepted types.
+    UnknownNameError
+        A name nothing registers (with the closest match).
+    """
+    if isinstance(value, kind):
+        return value
+    if isinstance(value, str):
+        return default_registry()._get(kind, value)
+    raise ArgumentTypeError(
+        f"{argument} must be a {kind.__name__} or the name of a registered {kind.kind} (str), "
+        f"got {type(value).__name__}"
+    )
+
+
+def _shown(value: object) -> str:
+    return one_line(repr(value), 40)
+
+
+def check_seed(seed: object, argument: str = "seed") -> int:
+    """``seed`` as an int; bools, floats, strings and the like are refused, not converted."""
+    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral):
+        raise ArgumentTypeError(
+            f"{argument} must be an integer, got {type(seed).__name__} {_shown(seed)}"
+        )
+    return int(seed)
+
+
+def check_real(value: object, argument: str, unit: str = "") -> float:
+    """``value`` as a float if it is a real number (int, float, numpy scalar; not bool or str)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        what = f"a number of {unit}" if unit else "a number"
+        raise ArgumentTypeError(
+            f"{argument} must be {what} (int or float), got {type(value).__name__} {_shown(value)}"
+        )
+    return float(value)
+
+
+def check_rate(fs: object, argument: str = "fs") -> float:
+    """A sampling rate as a positive finite float, in Hz."""
+    rate = check_real(fs, argument, "Hz")
+    if not math.isfinite(rate) or rate <= 0:
+        raise ArgumentValueError(f"{argument} must be a positive number of Hz, got {rate:g}")
+    return rate
+
+
+def describe_dtype(dtype: np.dtype) -> str:
+    """What a non-real dtype holds, in words: ``"booleans (dtype bool)"``."""
+    return f"{_KIND_NAMES.get(dtype.kind, 'not real numbers')} (dtype {dtype})"
+
+
+def real_array(x: object, argument: str = "x", label: str = "") -> np.ndarray:
+    """``x`` as a numpy array of real numbers (int or float dtype), not copied if it is one.
+
+    Booleans, complex numbers, Python objects and text are refused (a bool
+    array would otherwise become 0/1 g without a word).
+    """
+    where = f" (recording {label!r})" if label else ""
+    try:
+        array = np.asarray(x)
+    except (TypeError, ValueError) as exc:
+        raise ArgumentValueError(
+            f"{argument}{where} cannot be read as an array of numbers: {one_line(exc, 120)}"
+        ) from None
+    if array.dtype.kind not in _REAL_KINDS:
+        raise ArgumentTypeError(
+            f"{argument}{where} must hold real numbers (int or float), got "
+            f"{describe_dtype(array.dtype)}; convert it first, e.g. np.asarray({argument}, "
+            f"dtype=float)"
+        )
+    return array

@@ -1,0 +1,112 @@
+"""How ``sdt`` ends when something goes wrong: one line and an exit status, never a traceback
+for a problem the user can act on.
+
+- :class:`~sdt_framework.errors.SDTError`: ``error: <message>``, exit 2 (its ``exit_code``).
+- Ctrl-C anywhere in a command: one ``interrupted:`` line, exit 130 (typer alone would exit
+  130 silently). A command that wants a specific hint (how to resume) catches
+  KeyboardInterrupt itself and raises :class:`~sdt_framework.errors.UserInterruptError`
+  with it, or adds it as a note to the KeyboardInterrupt it re-raises.
+- The environment's errors, :class:`OSError` (permission denied, read-only or full disk,
+  a folder where a file is expected, a missing folder, HOME unusable) and
+  :class:`MemoryError`: one line naming the path, the cause and what to do, exit 2.
+  ``SDT_DEBUG=1`` shows their traceback instead.
+- Anything else is a bug and keeps its traceback.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import sys
+from collections.abc import Callable
+from typing import Any, NoReturn
+
+import click
+from typer.core import TyperGroup
+
+from ..errors import SDTError, UserInterruptError, one_line
+from .common import print_error
+
+__all__ = ["ENV_DEBUG", "InterruptibleGroup", "memory_error_line", "os_error_line", "run"]
+
+ENV_DEBUG = "SDT_DEBUG"
+
+_PERMISSION = "check its permissions (and its folder's), or choose another location"
+_ADVICE = {
+    errno.ENOENT: "check the path; a folder on the way may be missing (HOME, --out, --cache-dir)",
+    errno.EACCES: _PERMISSION,
+    errno.EPERM: _PERMISSION,
+    errno.EROFS: "the file system is read-only; choose a writable location",
+    errno.ENOSPC: "the disk is full; free some space or choose another location",
+    errno.EDQUOT: "the disk quota is used up; free some space or choose another location",
+    errno.EISDIR: "a folder is where a file is expected; give a file path",
+    errno.ENOTDIR: "a part of the path is a file, not a folder; check the path",
+    errno.EEXIST: "it already exists; choose another path",
+    errno.ENOTEMPTY: "the folder is not empty; choose another path",
+    errno.ENAMETOOLONG: "the name is too long; use a shorter path",
+    errno.EMFILE: "too many open files; raise the limit (ulimit -n) or use fewer --jobs",
+}
+_GENERIC = "an operating-system error; check the paths, permissions, free space and addresses given"
+
+
+def os_error_line(exc: OSError) -> str:
+    """One line for an OSError: the path(s), the system's reason, and what to do."""
+    code = exc.errno if isinstance(exc.errno, int) else None
+    reason = one_line(exc.strerror or exc or type(exc).__name__, 200)
+    if code is not None:
+        reason += f" ({errno.errorcode.get(code, code)})"
+    advice = _ADVICE.get(code, _GENERIC) if code is not None else _GENERIC
+    paths = [os.fsdecode(p) for p in (exc.filename, exc.filename2) if p is not None]
+    where = " -> ".join(repr(one_line(p, 200)) for p in paths) if paths else type(exc).__name__
+    return f"{where}: {reason}; {advice}"
+
+
+def memory_error_line(exc: MemoryError) -> str:
+    """One line for a MemoryError (numpy's says how much and which shape)."""
+    detail = one_line(exc, 200) or "MemoryError"
+    return (
+        f"out of memory: {detail}; process less data at once (shorter or fewer recordings, "
+        f"fewer --jobs) or use a machine with more memory"
+    )
+
+
+def _interrupt(exc: BaseException) -> UserInterruptError:
+    notes = " ".join(getattr(exc, "__notes__", ()))
+    return UserInterruptError(one_line(f"stopped by Ctrl-C. {notes}".strip(), 400))
+
+
+class InterruptibleGroup(TyperGroup):
+    """The root group: Ctrl-C inside any command becomes :class:`UserInterruptError`."""
+
+    def invoke(self, ctx: click.Context) -> Any:
+        """Run the command; turn KeyboardInterrupt into one ``interrupted:`` line, exit 130."""
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt as exc:
+            raise _interrupt(exc) from exc
+
+
+def run(app: Callable[[], Any]) -> None:
+    """Call ``app`` and turn the errors above into one line and an exit status."""
+    debug = bool(os.environ.get(ENV_DEBUG))
+    try:
+        app()
+    except UserInterruptError as exc:
+        _exit(str(exc), exc.exit_code, "interrupted:")
+    except SDTError as exc:
+        _exit(str(exc), exc.exit_code)
+    except KeyboardInterrupt as exc:
+        _exit(str(_interrupt(exc)), UserInterruptError.exit_code, "interrupted:")
+    except OSError as exc:
+        if debug:
+            raise
+        _exit(os_error_line(exc), 2)
+    except MemoryError as exc:
+        if debug:
+            raise
+        _exit(memory_error_line(exc), 2)
+
+
+def _exit(message: str, code: int, label: str = "error:") -> NoReturn:
+    print_error(message, label=label, style="yellow" if code == 130 else "bold red")
+    sys.exit(code)
