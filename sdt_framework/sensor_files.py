@@ -28,9 +28,14 @@ def load_sensor_file(path: str | os.PathLike[str]) -> list[SensorSpec]:
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:
-        raise SpecFileError(path, "", "file not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SpecFileError(path, "", f"cannot read: {exc}") from None
+        raise SpecFileError(path, "", "file not found; check the path") from None
+    except OSError as exc:
+        reason = exc.strerror or type(exc).__name__
+        raise SpecFileError(path, "", f"cannot read: {reason}; give a readable TOML file") from None
+    except UnicodeDecodeError as exc:
+        raise SpecFileError(
+            path, "", f"not UTF-8 text (byte {exc.start}); save it as a UTF-8 TOML file"
+        ) from None
     except tomllib.TOMLDecodeError as exc:
         raise SpecFileError(path, "", f"not valid TOML: {exc}") from None
 

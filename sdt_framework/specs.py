@@ -132,6 +132,12 @@ class FeatureBand(BaseModel):
         default=None, gt=0, description="Upper edge, Hz (inclusive); None: the Nyquist frequency."
     )
 
+    @model_validator(mode="after")
+    def _check_edges(self) -> FeatureBand:
+        if self.high_hz is not None and self.high_hz <= self.low_hz:
+            raise ValueError(f"band {self.describe()}: high_hz must be above low_hz")
+        return self
+
     def describe(self) -> str:
         """The band in words: ``"10-1000 Hz"`` or ``"10 Hz to Nyquist"``."""
         if self.high_hz is None:
@@ -169,8 +175,6 @@ class FeatureSetSpec(Spec):
         for band in self.bands:
             if not set(band.features) <= set(self.feature_names):
                 raise ValueError(f"band {band.describe()} names unknown features {band.features}")
-            if band.high_hz is not None and band.high_hz <= band.low_hz:
-                raise ValueError(f"band {band.describe()}: high_hz must be above low_hz")
         return self
 
     @property

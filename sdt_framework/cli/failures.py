@@ -57,6 +57,8 @@ def os_error_line(exc: OSError) -> str:
         reason += f" ({errno.errorcode.get(code, code)})"
     advice = _ADVICE.get(code, _GENERIC) if code is not None else _GENERIC
     paths = [os.fsdecode(p) for p in (exc.filename, exc.filename2) if p is not None]
+    if code == errno.EEXIST and paths and os.path.isfile(paths[0]):
+        advice = "it is a file, where a folder is needed; choose another path"
     where = " -> ".join(repr(one_line(p, 200)) for p in paths) if paths else type(exc).__name__
     return f"{where}: {reason}; {advice}"
 
