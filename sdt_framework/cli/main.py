@@ -44,6 +44,9 @@ def root(
 ) -> None:
     """Sensor Digital Twin: benchmark accelerometers for vibration diagnostics on a laptop.
 
+    A problem with the input or the environment prints one line and exits with status 2
+    (SDT_DEBUG=1 shows the traceback of an operating-system error); Ctrl-C exits with 130.
+
     Example:
 
       sdt sensors list

@@ -16,7 +16,11 @@ def list_plugins(
 ) -> None:
     """List every plugin with its distribution, version, status and what it provides.
 
-    Environment switches for setups with many plugins:
+    Status: loaded; partial (some specs it registered are invalid: not registered, one
+    warning line each, the others kept); blocked; not selected; error; conflict.
+
+    Environment switches for setups with many plugins (a name matching no installed
+    plugin or distribution is a warning):
 
       SDT_PLUGINS=name,dist   load only these plugins (entry-point or distribution names)
 

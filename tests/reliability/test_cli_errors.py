@@ -160,3 +160,12 @@ def test_sensor_file_that_is_a_folder_says_what_to_do(tmp_path, monkeypatch, cap
     assert status == 2
     line = one_error_line(err)
     assert str(tmp_path) in line and "Is a directory" in line and "TOML file" in line
+
+
+def test_sensor_file_not_utf8_says_what_to_do(tmp_path, monkeypatch, capsys):
+    profile = tmp_path / "bad.toml"
+    profile.write_bytes(b'name = "x"\ndescr = "\xff\xfe"\n')
+    status, _, err = run_main(monkeypatch, capsys, "--sensor-file", str(profile), "sensors", "list")
+    assert status == 2
+    line = one_error_line(err)
+    assert line == f"error: {profile}: not UTF-8 text (byte 20); save it as a UTF-8 TOML file"
