@@ -23,7 +23,14 @@ import tomllib
 from pathlib import Path
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    Field,
+    ValidationError,
+    field_validator,
+    model_validator,
+)
 
 from ..errors import SDTError, SpecFileError
 from .ties import check_tie
@@ -156,13 +163,18 @@ class Sweep(_Model):
     )
     target: Target = Field(default_factory=lambda: Target(max_loss=0.05))
 
-    @model_validator(mode="after")
-    def _check_names(self) -> Sweep:
-        for key in (*self.axes, *self.cost):
+    @field_validator("axes", "cost")
+    @classmethod
+    def _sweepable(cls, value: dict[str, Any]) -> dict[str, Any]:
+        for key in value:
             if key not in SWEEPABLE:
                 raise ValueError(
                     f"{key!r} is not a sweepable field; choose from {', '.join(SWEEPABLE)}"
                 )
+        return value
+
+    @model_validator(mode="after")
+    def _check_names(self) -> Sweep:
         for key, expression in self.ties.items():
             if key not in SWEEPABLE:
                 raise ValueError(f"tie {key!r} is not a sweepable field")
