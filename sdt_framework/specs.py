@@ -13,7 +13,7 @@ import importlib
 import json
 import re
 from collections.abc import Callable
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
@@ -28,6 +28,8 @@ __all__ = [
 
 #: a plain name, optionally followed by a design point's settings (``adxl345~rate=1600,nsd=90``)
 _NAME = re.compile(r"^[a-z0-9][a-z0-9._-]*(~[a-z0-9_]+=[a-z0-9.+-]+(,[a-z0-9_]+=[a-z0-9.+-]+)*)?$")
+#: bytes per value of each on-node feature dtype
+DTYPE_BYTES = {"float16": 2, "float32": 4}
 
 
 class Spec(BaseModel):
@@ -160,11 +162,37 @@ class FeatureSetSpec(Spec):
     compute: Callable[..., Any] = Field(
         exclude=True, description="compute(windows, fs) -> array (n_windows, n_features)."
     )
-    bytes_per_value: int = Field(default=4, ge=1, description="Edge payload per value (float32).")
+    dtype: Literal["float16", "float32"] = Field(
+        default="float32",
+        description="Type of each value as the node sends it: float32 (4 B) or float16 (2 B).",
+    )
+    bytes_per_value: int = Field(
+        default=4, ge=1, description="Edge payload per value, bytes; follows from dtype."
+    )
+
     bands: tuple[FeatureBand, ...] = Field(
         default=(),
         description="Frequency bands the features need; a rate leaving one empty is refused.",
     )
+    @model_validator(mode="before")
+    @classmethod
+    def _bytes_from_dtype(cls, data: Any) -> Any:
+        """bytes_per_value follows from dtype; giving both is allowed only if they agree."""
+        if not isinstance(data, dict):
+            return data
+        dtype = data.get("dtype", "float32")
+        size = DTYPE_BYTES.get(dtype)
+        given = data.get("bytes_per_value")
+        if size is None:
+            return data  # the Literal check names the allowed values
+        if given is None:
+            return {**data, "bytes_per_value": size}
+        if given != size:
+            raise ValueError(
+                f"bytes_per_value={given!r} contradicts dtype={dtype!r} ({size} bytes per "
+                f"value); give dtype only"
+            )
+        return data
 
     @model_validator(mode="after")
     def _check_lengths(self) -> FeatureSetSpec:
@@ -182,14 +210,26 @@ class FeatureSetSpec(Spec):
         """Edge payload of one window of one axis, bytes (paper: 32 B for paper8)."""
         return self.bytes_per_value * len(self.feature_names)
 
+    @property
+    def value_dtypes(self) -> tuple[str, ...]:
+        """The on-node type of each feature, in column order."""
+        return (self.dtype,) * len(self.feature_names)
+
+    def with_dtype(self, dtype: str) -> FeatureSetSpec:
+        """A copy whose every value is sent as ``dtype`` ("float16" or "float32")."""
+        return self.model_validate({**dict(self), "dtype": dtype, "bytes_per_value": None})
+
     def content_dict(self) -> dict[str, Any]:
         """Behaviour-defining fields plus the compute function's qualified name.
 
         ``bands`` is left out: it decides which rates are refused, not the
-        values computed, so declaring it keeps cache keys and results folders valid.
+        values computed. ``dtype`` is left out: ``bytes_per_value`` follows from
+        it one to one, so the hash of a float32 set is the one it had before sets
+        had a dtype. Both keep feature caches and results folders valid.
         """
         data = super().content_dict()
         data.pop("bands", None)
+        data.pop("dtype", None)
         data["compute"] = f"{self.compute.__module__}:{self.compute.__qualname__}"
         return data
 

@@ -44,6 +44,18 @@ class ComposedFeatureSetSpec(FeatureSetSpec):
         """Edge payload of one window of one axis: the sum over the parts."""
         return sum(part.bytes_per_window for part in self.parts)
 
+    @property
+    def value_dtypes(self) -> tuple[str, ...]:
+        """The on-node type of each feature: each part's, in column order."""
+        return tuple(d for part in self.parts for d in part.value_dtypes)
+
+    def with_dtype(self, dtype: str) -> FeatureSetSpec:
+        """A copy whose parts all send their values as ``dtype``."""
+        parts = tuple(part.with_dtype(dtype) for part in self.parts)
+        return self.model_validate(
+            {**dict(self), "parts": parts, "dtype": dtype, "bytes_per_value": None}
+        )
+
     def content_dict(self) -> dict[str, Any]:
         """The parts' behaviour-defining fields, for cache keys."""
         data = super().content_dict()

@@ -1,0 +1,56 @@
+"""The edge deployment budget: payload, LoRaWAN airtime, duty cycle, energy.
+
+Pure functions with their formulas and sources in each module's docstring
+(see also docs/edge.md).
+
+Public API
+----------
+edge_budget, EdgeBudget, DataRateBudget, report_bytes
+    One report per interval: per data rate, does it fit, time on air, duty
+    cycle, messages, airtime and energy per day.
+time_on_air_s, payload_symbols, symbol_time_s, low_data_rate_optimize
+    The Semtech SX127x time-on-air formula.
+region, REGIONS, Region, DataRate, phy_payload_bytes, OVERHEAD_BYTES
+    LoRaWAN framing (13 bytes) and the EU868 / US915 data-rate plans.
+radio, RADIOS, Radio, energy_per_message_j
+    Transmit energy from a current/voltage model (SX1276 datasheet defaults).
+quantise_features
+    Round features to their on-node dtype (float16 halves the payload).
+parse_interval, format_interval
+    ``"10min"`` <-> 600 s.
+"""
+
+from __future__ import annotations
+
+from .budget import SECONDS_PER_DAY, DataRateBudget, EdgeBudget, edge_budget, report_bytes
+from .energy import DEFAULT_RADIO, RADIOS, Radio, energy_per_message_j, radio
+from .interval import format_interval, parse_interval
+from .lora import low_data_rate_optimize, payload_symbols, symbol_time_s, time_on_air_s
+from .lorawan import OVERHEAD_BYTES, REGIONS, DataRate, Region, phy_payload_bytes, region
+from .quantise import quantise_features
+
+__all__ = [
+    "DEFAULT_RADIO",
+    "OVERHEAD_BYTES",
+    "RADIOS",
+    "REGIONS",
+    "SECONDS_PER_DAY",
+    "DataRate",
+    "DataRateBudget",
+    "EdgeBudget",
+    "Radio",
+    "Region",
+    "edge_budget",
+    "energy_per_message_j",
+    "format_interval",
+    "low_data_rate_optimize",
+    "parse_interval",
+    "payload_symbols",
+    "phy_payload_bytes",
+    "quantise_features",
+    "radio",
+    "region",
+    "report_bytes",
+    "symbol_time_s",
+    "time_on_air_s",
+]
