@@ -57,6 +57,11 @@ class BenchmarkConfig(BaseModel):
     reference: str = Field(default="wilcoxon-786b10", description="Reference sensor for deltas.")
     classifiers: list[str] | None = Field(default=None, description="Classifiers (all).")
     features: str = Field(default="paper8", description="Feature set, e.g. 'paper8+env_bpfo'.")
+    feature_dtype: Literal["float16", "float32"] | None = Field(
+        default=None,
+        description="Round features to this on-node type before classification "
+        "(default: the feature set's declared dtype).",
+    )
     window_s: float = Field(default=0.64, gt=0, description="Window length, s.")
     settle_s: float = Field(default=0.1, ge=0, description="Settling discarded per acquisition, s.")
     scenarios: list[Literal["forward", "backward", "interpolation"]] = Field(

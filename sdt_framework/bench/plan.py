@@ -64,6 +64,8 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     sensors = _pick(config.sensors, registry.sensor, registry.sensors())
     classifiers = _pick(config.classifiers, registry.classifier, registry.classifiers())
     feature_set = resolve_feature_set(registry, config.features)
+    if config.feature_dtype is not None:
+        feature_set = feature_set.with_dtype(config.feature_dtype)
     dataset = _open(config, registry)
     recordings = dataset.recordings()
     if not recordings:

@@ -20,6 +20,7 @@ from typing import Any
 import pandas as pd
 
 from ..data.cache import default_cache_dir
+from ..edge.quantise import quantise_features
 from ..io import atomic_write_text
 from ..seeding import derive_seed
 from ..specs import ClassifierSpec, SensorSpec
@@ -66,6 +67,9 @@ def _run_key(
 def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
     """All feature blocks as one table, in plan order (never in completion order).
 
+    Each block is rounded to the feature set's on-node dtype (float32: left as
+    is), so classifiers and features.parquet see what the node would send.
+
     Row order matters: bootstrap samples (rf), minibatches (mlp) and tree
     building (xgb) depend on it, so it must not depend on which worker finished
     first.
@@ -79,7 +83,8 @@ def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
     frames = []
     for b in blocks:
         rec = by_id[b.recording_id]
-        frame = pd.DataFrame(b.values, columns=list(plan.feature_set.feature_names))
+        values = quantise_features(b.values, plan.feature_set, where=b.recording_id)
+        frame = pd.DataFrame(values, columns=list(plan.feature_set.feature_names))
         meta = {
             "machine": rec.machine,
             "run": rec.run,

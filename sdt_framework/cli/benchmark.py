@@ -59,6 +59,9 @@ def benchmark(
     sensors: str | None = typer.Option(None, "--sensors", help="Comma-separated sensor names."),
     classifiers: str | None = typer.Option(None, "--classifiers", help="Comma-separated."),
     features: str | None = typer.Option(None, "--features", help="Feature set, e.g. paper8."),
+    feature_dtype: str | None = typer.Option(
+        None, "--feature-dtype", help="Round features to float16 or float32 before classifying."
+    ),
     scenarios: str | None = typer.Option(
         None, "--scenarios", help="Comma-separated: forward,backward,interpolation."
     ),
@@ -108,6 +111,7 @@ def benchmark(
         "sensors": _names(sensors),
         "classifiers": _names(classifiers),
         "features": features,
+        "feature_dtype": feature_dtype,
         "scenarios": _names(scenarios),
         "machines": _names(machines),
         "channels": _names(channels),

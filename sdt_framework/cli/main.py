@@ -9,6 +9,7 @@ import typer
 from . import classifiers, features, plugins, sensors
 from . import dataset as dataset_cli
 from .benchmark import benchmark
+from .budget import budget
 from .chain import register as register_chain_commands
 from .explore import explore
 from .failures import InterruptibleGroup, run
@@ -31,6 +32,7 @@ register_chain_commands(app)
 app.command("benchmark")(benchmark)
 app.command("report")(report)
 app.command("explore")(explore)
+app.command("budget")(budget)
 
 
 @app.callback()
