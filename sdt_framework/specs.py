@@ -177,16 +177,24 @@ class FeatureSetSpec(Spec):
     @model_validator(mode="before")
     @classmethod
     def _bytes_from_dtype(cls, data: Any) -> Any:
-        """bytes_per_value follows from dtype; giving both is allowed only if they agree."""
+        """bytes_per_value follows from dtype (or, given alone, sets it); both must agree."""
         if not isinstance(data, dict):
             return data
-        dtype = data.get("dtype", "float32")
-        size = DTYPE_BYTES.get(dtype)
         given = data.get("bytes_per_value")
+        if data.get("dtype") is None and given is not None:  # a set written before dtype
+            by_size = {size: name for name, size in DTYPE_BYTES.items()}
+            if given not in by_size:
+                raise ValueError(
+                    f"bytes_per_value={given!r} matches no dtype; give dtype "
+                    f"({', '.join(f'{n}: {b} B' for n, b in DTYPE_BYTES.items())})"
+                )
+            return {**data, "dtype": by_size[given]}
+        dtype = data.get("dtype") or "float32"
+        size = DTYPE_BYTES.get(dtype)
         if size is None:
             return data  # the Literal check names the allowed values
         if given is None:
-            return {**data, "bytes_per_value": size}
+            return {**data, "dtype": dtype, "bytes_per_value": size}
         if given != size:
             raise ValueError(
                 f"bytes_per_value={given!r} contradicts dtype={dtype!r} ({size} bytes per "

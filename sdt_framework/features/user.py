@@ -81,7 +81,8 @@ def feature(
     *,
     description: str = "",
     source: str = "",
-    bytes_per_value: int = 4,
+    bytes_per_value: int | None = None,
+    dtype: str | None = None,
     registry: Registry | None = None,
 ) -> Callable[[FeatureFunction], Feature]:
     """Turn ``function(windows, fs) -> (n_windows,)`` into a registrable feature.
@@ -94,8 +95,9 @@ def feature(
         Unit of the value, e.g. ``"g"``; ``"1"`` for dimensionless.
     description, source
         One line saying what it is, and where it comes from.
-    bytes_per_value
-        Edge payload of the value (float32: 4).
+    bytes_per_value, dtype
+        How the node sends the value: dtype "float32" (4 bytes, the default)
+        or "float16" (2 bytes); either one is enough.
     registry
         If given, register the feature there at once (in-process).
 
@@ -115,6 +117,7 @@ def feature(
             units=(unit,),
             compute=_column(function, name),
             bytes_per_value=bytes_per_value,
+            dtype=dtype,
         )
         wrapped = Feature(function, spec)
         if registry is not None:

@@ -12,6 +12,7 @@ from ..errors import SDTError
 from ..io import atomic_write_text
 from .document import Block, Code, Heading, Items, Paragraph, Table
 from .exploration import exploration_blocks
+from .edge import edge_blocks
 from .figures import draw_figures
 from .load import ResultsFolder, load_results
 from .render import render_html, render_markdown
@@ -125,6 +126,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     if not folder.failed.empty:
         blocks += [Heading("Failed runs", 2), failed_table(folder.failed)]
     blocks += exploration_blocks(folder.path)
+    blocks += edge_blocks(folder, registry)
     blocks.append(Heading("Figures", 2))
     blocks += draw_figures(folder, registry, colors, figures_dir, CAPTIONS)
     return blocks + _provenance(folder)
