@@ -19,7 +19,8 @@ def budget_summary(budget: EdgeBudget) -> str:
     radio = budget.radio
     return (
         f"{budget.feature_set}: {budget.n_features} features x {dtypes} = "
-        f"{budget.bytes_per_window_per_axis} B/axis x {budget.axes} axes = "
+        f"{budget.bytes_per_window_per_axis} B/axis x {budget.axes} "
+        f"{'axis' if budget.axes == 1 else 'axes'} = "
         f"{budget.app_payload_bytes} B per report (+{budget.overhead_bytes} B LoRaWAN per "
         f"uplink), every {format_interval(budget.interval_s)} "
         f"({budget.reports_per_day:g} reports/day); {budget.region}, {duty}; radio "

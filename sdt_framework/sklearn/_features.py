@@ -9,15 +9,15 @@ from sklearn.utils.validation import check_is_fitted, validate_data
 from sdt_framework.features import extract, resolve_feature_set
 from sdt_framework.specs import FeatureSetSpec
 
+from ._registry import installed_registry
+
 __all__ = ["FeatureExtractor"]
 
 
 def _resolve(feature_set: str | FeatureSetSpec) -> FeatureSetSpec:
     if isinstance(feature_set, FeatureSetSpec):
         return feature_set
-    from sdt_framework.registry import build_registry
-
-    return resolve_feature_set(build_registry(), str(feature_set))
+    return resolve_feature_set(installed_registry(), str(feature_set))
 
 
 class FeatureExtractor(TransformerMixin, BaseEstimator):

@@ -12,6 +12,8 @@ from sdt_framework.errors import SDTError
 from sdt_framework.features import samples_for
 from sdt_framework.specs import SensorSpec
 
+from ._registry import installed_registry
+
 __all__ = ["SensorTwin", "row_noise_ids"]
 
 _HASH_SEED = 0x5D7_5EED
@@ -34,9 +36,7 @@ def row_noise_ids(X: np.ndarray) -> list[int]:
 def _resolve_sensor(sensor: str | SensorSpec) -> SensorSpec:
     if isinstance(sensor, SensorSpec):
         return sensor
-    from sdt_framework.registry import build_registry
-
-    return build_registry().sensor(str(sensor))
+    return installed_registry().sensor(str(sensor))
 
 
 class SensorTwin(ClassNamePrefixFeaturesOutMixin, TransformerMixin, BaseEstimator):

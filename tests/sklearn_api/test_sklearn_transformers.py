@@ -9,6 +9,7 @@ from sklearn.base import clone
 from sklearn.linear_model import LogisticRegression
 from sklearn.model_selection import GroupKFold, cross_val_score
 from sklearn.pipeline import make_pipeline
+from sklearn.preprocessing import StandardScaler
 
 from sdt_framework import SDTError, UnknownNameError, build_registry
 from sdt_framework.chain import degrade
@@ -130,7 +131,10 @@ def test_pipeline_with_classifier_and_group_kfold(acquisitions):
     rows, groups = window_rows(np.vstack([acquisitions, 3 * acquisitions]), FS)
     labels = np.repeat(["quiet", "loud"], 6)
     pipe = make_pipeline(
-        SensorTwin("adxl345", fs=FS), FeatureExtractor("paper8", fs=3200), LogisticRegression()
+        SensorTwin("adxl345", fs=FS),
+        FeatureExtractor("paper8", fs=3200),
+        StandardScaler(),
+        LogisticRegression(),
     )
     scores = cross_val_score(pipe, rows, labels, groups=groups, cv=GroupKFold(n_splits=3))
     assert scores.shape == (3,) and np.all(scores == 1.0)  # 3x the RMS: trivially separable
