@@ -36,3 +36,9 @@ def runner_invoke(args: list[str]) -> str:
     result = CliRunner().invoke(app, ["budget", *args], env={"COLUMNS": "100"})
     assert result.exit_code == 0, result.output
     return result.stdout.rstrip("\n")
+
+
+def test_readme_shows_the_same_budget_output():
+    readme = (DOC.parents[1] / "README.md").read_text(encoding="utf-8")
+    shown = readme.split("$ sdt budget\n", 1)[1].split("```", 1)[0]
+    assert shown.rstrip("\n") == runner_invoke([])

@@ -151,3 +151,13 @@ def test_errors_name_the_problem(acquisitions):
         SensorTwin("adxl345", fs=FS, settle_s=0).fit(acquisitions[:, :50]).transform(
             acquisitions[:, :3]
         )
+
+
+def test_the_subpackage_named_sklearn_uses_scikit_learn():
+    import sklearn
+
+    import sdt_framework.sklearn as ours
+
+    assert sklearn.__name__ == "sklearn" and sklearn.__file__ != ours.__file__
+    assert issubclass(SensorTwin, sklearn.base.TransformerMixin)
+    assert issubclass(FeatureExtractor, sklearn.base.BaseEstimator)
