@@ -174,6 +174,7 @@ class FeatureSetSpec(Spec):
         default=(),
         description="Frequency bands the features need; a rate leaving one empty is refused.",
     )
+
     @model_validator(mode="before")
     @classmethod
     def _bytes_from_dtype(cls, data: Any) -> Any:

@@ -11,8 +11,8 @@ from typing import Any
 from ..errors import SDTError
 from ..io import atomic_write_text
 from .document import Block, Code, Heading, Items, Paragraph, Table
-from .exploration import exploration_blocks
 from .edge import edge_blocks
+from .exploration import exploration_blocks
 from .figures import draw_figures
 from .load import ResultsFolder, load_results
 from .render import render_html, render_markdown
