@@ -1,15 +1,21 @@
 """Reading and writing signal arrays for the chain commands (.npy or .csv).
 
-CSV layout: one acquisition per row (a single column or a single row is one
-acquisition, read as 1-D); an optional non-numeric header line is skipped.
-Writes are atomic (:mod:`sdt_framework.io`); CSV values use ``%.17g`` so a
-float64 survives the round trip exactly.
+A CSV is read by the same rule as a manifest's CSV signal
+(:func:`sdt_framework.data.csv_signal.read_csv_signal`): a header line and a
+time column are detected (the time column is dropped and a note says so), and
+the longer axis is time, so an ordinary ``time,acc`` file is one acquisition
+and a ``numpy.savetxt`` of an (acquisitions, samples) array is that many rows.
+A single series is returned 1-D. An NPY array is taken as stored (1-D, or
+rows = acquisitions). Writes are atomic (:mod:`sdt_framework.io`); CSV values
+use ``%.17g`` so a float64 survives the round trip exactly. Every failure is a
+one-line :class:`~sdt_framework.errors.SDTError` naming the path.
 """
 
 from __future__ import annotations
 
 import os
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -17,10 +23,17 @@ from numpy.typing import NDArray
 from ..errors import SDTError
 from ..io import atomic_path
 
-__all__ = ["UNITS", "load_array", "save_array", "to_g"]
+__all__ = ["SUFFIXES", "UNITS", "LoadedSignal", "load_signal", "save_array", "to_g"]
 
 SUFFIXES = (".npy", ".csv")
 UNITS = ("g", "mg", "lsb")
+
+
+class LoadedSignal(NamedTuple):
+    """A signal read from a file, and a note when a CSV time column was dropped."""
+
+    data: NDArray[np.float64]
+    note: str | None
 
 
 def _suffix(path: Path) -> str:
@@ -30,22 +43,27 @@ def _suffix(path: Path) -> str:
     return suffix
 
 
-def load_array(path: str | os.PathLike[str]) -> NDArray[np.float64]:
-    """Read a numeric array from ``path`` (.npy, or .csv with rows = acquisitions)."""
+def load_signal(path: str | os.PathLike[str]) -> LoadedSignal:
+    """Read a numeric array from ``path`` (.npy, or .csv by the shared CSV rule)."""
+    from ..data.csv_signal import read_csv_signal  # the one CSV rule (imported on use)
+    from ..data.tokens import brief
+
     path = Path(path)
+    if path.is_dir():
+        raise SDTError(f"{path}: is a folder; give the signal file")
     suffix = _suffix(path)
     if not path.is_file():
-        raise SDTError(f"{path}: no such file")
+        raise SDTError(f"{path}: no such file; check the path")
+    if suffix == ".csv":
+        parsed = read_csv_signal(path)
+        data = parsed.data[0] if parsed.data.shape[0] == 1 else parsed.data
+        return LoadedSignal(data, parsed.note)
     try:
-        if suffix == ".npy":
-            return np.asarray(np.load(path, allow_pickle=False))
-        try:
-            return np.loadtxt(path, delimiter=",", dtype=np.float64)
-        except ValueError:
-            return np.loadtxt(path, delimiter=",", dtype=np.float64, skiprows=1)
-    except (ValueError, OSError) as exc:
-        first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-        raise SDTError(f"{path}: cannot read numbers ({first})") from None
+        return LoadedSignal(np.asarray(np.load(path, allow_pickle=False)), None)
+    except OSError as exc:
+        raise SDTError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
+    except (ValueError, EOFError) as exc:
+        raise SDTError(f"{path}: not a readable .npy file ({brief(exc)})") from None
 
 
 def save_array(path: str | os.PathLike[str], x: NDArray[np.float64]) -> Path:

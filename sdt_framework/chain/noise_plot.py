@@ -17,7 +17,22 @@ from scipy import signal
 from ..io import atomic_path
 from .noise_check import BAND_HZ, NoiseCheck, WindowStats
 
-__all__ = ["NoiseSeries", "draw_noise", "plot_noise_check"]
+__all__ = ["NoiseSeries", "draw_noise", "plot_formats", "plot_noise_check"]
+
+#: matplotlib formats left out: pgf needs LaTeX, raw/rgba are pixel dumps no viewer opens
+_NOT_OFFERED = frozenset({"pgf", "raw", "rgba"})
+
+
+def plot_formats() -> tuple[str, ...]:
+    """Extensions ``plot_noise_check`` writes: png, pdf, svg first, then matplotlib's others.
+
+    Checked before the computation, so a typo in ``--plot`` costs nothing.
+    """
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    first = ("png", "pdf", "svg")
+    found = set(FigureCanvasBase.get_supported_filetypes()) - _NOT_OFFERED
+    return tuple(f for f in first if f in found) + tuple(sorted(found - set(first)))
 
 
 #: one curve of the noise figure: label, signal (g), rate (Hz), its statistics, colour, line style

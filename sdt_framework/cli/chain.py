@@ -7,7 +7,7 @@ from typing import Annotated, Any
 
 import typer
 
-from .common import console, print_json, registry
+from .common import console, err_console, print_json, registry
 
 __all__ = ["degrade_command", "register", "validate_noise_command"]
 
@@ -29,21 +29,28 @@ def degrade_command(
     """Degrade a recording to what SENSOR would have recorded (SPEC section 2).
 
     INPUT is 1-D (one acquisition) or 2-D (rows = acquisitions, each a whole
-    continuous acquisition). The output keeps that shape convention.
+    continuous acquisition). The output keeps that shape convention. A CSV is
+    read as a manifest's CSV is: a header line is skipped, a time column is
+    dropped (with a note), and the longer axis is time, so a `time,acc` file is
+    one acquisition. --out may not be INPUT itself.
 
     Example:
 
       sdt degrade pump.npy --sensor adxl345 --fs 20000 --seed 0 --out pump_adxl345.npy
     """
     from ..chain import degrade  # scipy.signal: imported on use so `sdt --help` starts fast
-    from ..chain.files import load_array, save_array
+    from ..chain.files import SUFFIXES, load_signal, save_array
+    from .guards import check_output_file, os_errors
 
-    spec = registry(ctx).sensor(sensor)
-    x = load_array(input_path)
-    y, fs_out = degrade(
-        x, fs, spec, seed, noise=not no_noise, label=str(input_path), first_index=first_index
-    )
-    save_array(out, y)
+    with os_errors():
+        spec = registry(ctx).sensor(sensor)
+        check_output_file(out, "--out", SUFFIXES, inputs=[input_path])
+        x, note = load_signal(input_path)
+        _note(note)
+        y, fs_out = degrade(
+            x, fs, spec, seed, noise=not no_noise, label=str(input_path), first_index=first_index
+        )
+        save_array(out, y)
     rows = 1 if y.ndim == 1 else y.shape[0]
     noise_state = "off" if no_noise else ("on" if spec.inject_noise else "off (profile)")
     console.print(
@@ -53,6 +60,12 @@ def degrade_command(
         highlight=False,
         soft_wrap=True,
     )
+
+
+def _note(note: str | None) -> None:
+    """Print a reader's note (a dropped time column) once, on stderr, as plain text."""
+    if note:
+        err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
 
 
 def _cell(stats: dict[str, Any], key: str) -> str:
@@ -110,9 +123,18 @@ def validate_noise_command(
         20000.0, "--reference-fs", help="Rate of the zero input fed to the chain, Hz."
     ),
     plot: Annotated[
-        Path | None, typer.Option("--plot", help="Save a PNG of trace and ASD here.")
+        Path | None,
+        typer.Option(
+            "--plot", help="Save trace and ASD here (.png, .pdf, .svg, ...; checked first)."
+        ),
     ] = None,
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
+    yes: bool = typer.Option(
+        False,
+        "--yes",
+        help="Run even when the size estimate is large or long (never one that "
+        "cannot fit in memory).",
+    ),
 ) -> None:
     """Zero-motion noise check of a sensor's chain (paper section 3.1, Table 2).
 
@@ -120,33 +142,54 @@ def validate_noise_command(
     --windows windows of --window-length samples; per window: RMS (mean
     removed, mg) and NSD (sqrt of the mean Welch PSD over 10..1500 Hz,
     µg/√Hz). With --recording the same statistics of the recording, the
-    relative error and Welch t-test p-values are added.
+    relative error and Welch t-test p-values are added. The size is checked
+    first: one that cannot fit in memory is refused, a large or long one needs
+    --yes; the --plot path is checked before the computation too.
 
     Example:
 
       sdt validate-noise --sensor adxl345 --json
 
       sdt validate-noise --sensor adxl345 --recording x_axis.csv --unit lsb --scale 0.0039
+
+      sdt validate-noise --sensor adxl357 --windows 4096 --yes --plot noise.png
     """
     from ..chain import noise_check, plot_noise_check  # imported on use, as in degrade
-    from ..chain.files import load_array, to_g
+    from ..chain.files import load_signal, to_g
+    from ..chain.noise_check import zero_motion_cost
+    from ..chain.noise_plot import plot_formats
+    from ..data.sizes import Cost
+    from .guards import check_cost, check_output_file, os_errors
 
-    spec = registry(ctx).sensor(sensor)
-    rec = None
-    if recording is not None:
-        rec = to_g(load_array(recording), unit.lower(), scale, str(recording))
-    result = noise_check(
-        spec,
-        recording=rec,
-        recording_fs=fs,
-        seed=seed,
-        fs_ref=reference_fs,
-        n_windows=windows,
-        window_length=window_length,
-        label=str(recording or ""),
-    )
-    if plot is not None:
-        plot_noise_check(result, plot)
+    with os_errors():
+        spec = registry(ctx).sensor(sensor)
+        if plot is not None:
+            inputs = [recording] if recording is not None else []
+            check_output_file(plot, "--plot", [f".{f}" for f in plot_formats()], inputs)
+        n_in, peak, seconds = zero_motion_cost(spec, reference_fs, windows, window_length)
+        check_cost(
+            f"validate-noise --windows {windows} --window-length {window_length}",
+            Cost(n_in, peak, seconds),
+            yes,
+            "--windows or --window-length",
+        )
+        rec = None
+        if recording is not None:
+            loaded, note = load_signal(recording)
+            _note(note)
+            rec = to_g(loaded, unit.lower(), scale, str(recording))
+        result = noise_check(
+            spec,
+            recording=rec,
+            recording_fs=fs,
+            seed=seed,
+            fs_ref=reference_fs,
+            n_windows=windows,
+            window_length=window_length,
+            label=str(recording or ""),
+        )
+        if plot is not None:
+            plot_noise_check(result, plot)
     data = result.to_dict()
     if as_json:
         print_json(data)

@@ -50,28 +50,85 @@ def synth(
     duration: float | None = typer.Option(
         None, "--duration", help="Seconds per acquisition (default 12)."
     ),
+    overwrite: bool = typer.Option(
+        False,
+        "--overwrite",
+        help="Write into an --out that already holds recordings, replacing files of the same "
+        "name (other files are left and counted).",
+    ),
+    yes: bool = typer.Option(
+        False,
+        "--yes",
+        help="Run even when the size estimate is large or long (never one that "
+        "cannot fit in memory or on disk).",
+    ),
 ) -> None:
     """Write the synthetic pump dataset in the NLN-EMP layout and CSV format.
 
     The result reads back with the NLN-EMP reader (``sdt dataset inspect OUT``).
+    An --out that already holds recordings (files under OUT/Vibration) is
+    refused unless --overwrite is given. The size (samples, memory, disk, time)
+    is estimated first: a size that cannot fit is refused, a large or long one
+    needs --yes.
 
     Example:
 
       sdt dataset synth --out data/synthetic --seed 1 --acquisitions 5 --duration 12
+
+      sdt dataset synth --out data/synthetic --duration 2 --overwrite
     """
     from ..data import open_dataset, write_nln_emp  # heavy (scipy, pyarrow): on use only
+    from ..data.sizes import synth_cost
+    from ..data.synth import FS_HZ
+    from .guards import check_cost, check_output_folder, os_errors
 
-    given = {"seed": seed, "acquisitions": acquisitions, "duration": duration}
-    options = {key: value for key, value in given.items() if value is not None}
-    dataset = open_dataset(registry(ctx), "synthetic-pump", **options)
-    start = time.perf_counter()
-    written = write_nln_emp(dataset, out)
-    size = sum(p.stat().st_size for p in written) / 1e6
+    with os_errors(str(out)):
+        existing = _existing_recordings(out, overwrite)
+        given = {"seed": seed, "acquisitions": acquisitions, "duration": duration}
+        options = {key: value for key, value in given.items() if value is not None}
+        dataset = open_dataset(registry(ctx), "synthetic-pump", **options)
+        cost = synth_cost(
+            len(dataset.recordings()),
+            len(dataset.channels),
+            dataset.acquisitions,
+            dataset.duration,
+            FS_HZ,
+        )
+        check_output_folder(out, "--out")
+        check_cost("dataset synth", cost, yes, "--duration or --acquisitions", folder=out)
+        start = time.perf_counter()
+        written = write_nln_emp(dataset, out)
+        size = sum(p.stat().st_size for p in written) / 1e6
     err_console.print(
         f"wrote {len(written)} files ({size:.1f} MB) under {out / 'Vibration'} "
         f"in {time.perf_counter() - start:.1f} s",
         highlight=False,
     )
+    others = existing - {p.resolve() for p in written}
+    if others:
+        err_console.print(
+            f"note: {len(others)} other file(s) under {out / 'Vibration'} were not written by "
+            f"this run and were left as they were",
+            markup=False,
+            highlight=False,
+            soft_wrap=True,
+        )
+
+
+def _existing_recordings(out: Path, overwrite: bool) -> set[Path]:
+    """Files already under OUT/Vibration; refused unless ``overwrite``."""
+    from ..errors import SDTError
+
+    if out.exists() and not out.is_dir():
+        raise SDTError(f"--out {out} is a file; give a folder (new, or empty of recordings)")
+    root = out / "Vibration"
+    existing = {p.resolve() for p in root.rglob("*") if p.is_file()} if root.is_dir() else set()
+    if existing and not overwrite:
+        raise SDTError(
+            f"--out {out} already holds recordings ({len(existing)} files under {root}); "
+            f"choose a new folder, or pass --overwrite to replace files of the same name"
+        )
+    return existing
 
 
 @app.command("inspect")
@@ -96,11 +153,15 @@ def inspect(
       sdt dataset inspect synthetic-pump
     """
     from ..data import open_dataset  # heavy (scipy, pyarrow): on use only
+    from .guards import os_errors
 
-    dataset = open_dataset(registry(ctx), path_or_name)
-    if validate:
-        dataset.validate()
+    with os_errors(path_or_name):
+        dataset = open_dataset(registry(ctx), path_or_name)
+        if validate:
+            dataset.validate()
     info = dataset.describe()
+    for note in dataset.notes:
+        err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
     if as_json:
         print_json(info)
         return

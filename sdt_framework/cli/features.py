@@ -56,12 +56,17 @@ def _load_npy(path: Path) -> Any:
     """Read a .npy signal; numpy is imported here to keep ``sdt --help`` fast."""
     import numpy as np
 
+    from ..data.tokens import brief
+
     if path.suffix.lower() != ".npy":
         raise SDTError(f"{path}: input must be a .npy file (1-D, or 2-D rows = acquisitions)")
+    if not path.is_file():
+        what = "is a folder; give the signal file" if path.is_dir() else "no such file"
+        raise SDTError(f"{path}: {what}; check the path")
     try:
         return np.load(path, allow_pickle=False)
-    except (OSError, ValueError) as exc:
-        raise SDTError(f"{path}: cannot read as .npy ({exc})") from None
+    except (OSError, ValueError, EOFError) as exc:
+        raise SDTError(f"{path}: cannot read as .npy ({brief(exc)})") from None
 
 
 @app.command("extract")
@@ -90,18 +95,22 @@ def extract_features(
 
     Units travel with the values: a CSV feature column is headed 'name\\[unit]'
     (V_RMS\\[mm/s]); a Parquet feature column carries 'unit' field metadata.
+    --out may not be INPUT (nor a link to it); its folder is checked first.
 
     Example:
 
       sdt features extract adxl345.npy --fs 3200 --set paper8 --out features.parquet
     """
     from ..features import extract, resolve_feature_set, write_feature_table
+    from .guards import check_output_file, os_errors
 
     spec = resolve_feature_set(registry(ctx), feature_set)
     if out.suffix.lower() not in {".csv", ".parquet"}:
         raise SDTError(f"{out}: --out must end in .csv or .parquet")
-    result = extract(_load_npy(input_path), fs, spec, window_s=window_s, settle_s=settle_s)
-    write_feature_table(result, out)
+    with os_errors():
+        check_output_file(out, "--out", (".csv", ".parquet"), inputs=[input_path])
+        result = extract(_load_npy(input_path), fs, spec, window_s=window_s, settle_s=settle_s)
+        write_feature_table(result, out)
     n_acq = len(set(result.acquisition.tolist()))
     console.print(
         f"wrote {result.values.shape[0]} windows x {len(result.names)} features "

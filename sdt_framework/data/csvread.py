@@ -17,7 +17,9 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.csv as pacsv
 
+from .csv_signal import locate_problem
 from .recording import DataFileError
+from .tokens import quote
 
 __all__ = ["CsvHeader", "parse_nln_csv", "read_header"]
 
@@ -36,13 +38,26 @@ class CsvHeader:
         return round(1.0 / self.time_step_s, 3)
 
 
-def _check_columns(path: Path, columns: list[str]) -> None:
+def _header(path: Path, line: bytes) -> list[str]:
+    """The header cells; a message names the first wrong one (a short token, never the line)."""
+    try:
+        columns = line.decode("utf-8-sig").strip().split(",")
+    except UnicodeDecodeError:
+        raise DataFileError(f"{path}: line 1: not UTF-8 text; expected 'time,0,1,...'") from None
     expected = ["time", *map(str, range(len(columns) - 1))]
-    if len(columns) < 2 or columns != expected:
+    pairs = enumerate(zip(columns, expected, strict=True))
+    wrong = next((i for i, (a, b) in pairs if a != b), None)
+    if len(columns) < 2 or wrong is not None:
+        what = (
+            f"column {wrong + 1} is {quote(columns[wrong])}, not {expected[wrong]!r}"
+            if wrong is not None
+            else f"{len(columns)} column"
+        )
         raise DataFileError(
-            f"{path}: line 1: header {','.join(columns)!r} is not 'time,0,1,...' "
+            f"{path}: line 1: header {what}; expected 'time,0,1,...' "
             f"(NLN-EMP format: a time column then one column per acquisition)"
         )
+    return columns
 
 
 def _last_line(path: Path, size: int) -> bytes:
@@ -61,8 +76,7 @@ def read_header(path: str | os.PathLike[str]) -> CsvHeader:
     path = Path(path)
     with open(path, "rb") as handle:
         head = [handle.readline() for _ in range(3)]
-    columns = head[0].decode("utf-8", "replace").strip().split(",")
-    _check_columns(path, columns)
+    columns = _header(path, head[0])
     try:
         t0, t1 = (float(line.split(b",", 1)[0]) for line in head[1:3])
         t_last = float(_last_line(path, path.stat().st_size).split(b",", 1)[0])
@@ -77,21 +91,10 @@ def read_header(path: str | os.PathLike[str]) -> CsvHeader:
     return CsvHeader(tuple(columns), step, round((t_last - t0) / step) + 1)
 
 
-def _locate(path: Path, n_columns: int) -> str:
-    """Scan the file to name the first ragged or non-numeric line."""
-    with open(path, encoding="utf-8", errors="replace") as handle:
-        next(handle, None)
-        for number, line in enumerate(handle, start=2):
-            cells = line.rstrip("\r\n").split(",")
-            if len(cells) != n_columns:
-                return f"line {number}: expected {n_columns} values, found {len(cells)}"
-            for index, cell in enumerate(cells):
-                try:
-                    float(cell)
-                except ValueError:
-                    name = "time" if index == 0 else str(index - 1)
-                    return f"line {number}, column {name!r}: {cell!r} is not a number"
-    return "unreadable content"
+def _locate(path: Path, columns: list[str]) -> str:
+    """Scan the file to name the first ragged, non-UTF-8 or non-numeric line."""
+    found = locate_problem(path, len(columns), 2, [quote(c) for c in columns])
+    return found or "unreadable content"
 
 
 def _check_values(path: Path, table: pa.Table, columns: list[str]) -> np.ndarray:
@@ -129,8 +132,7 @@ def parse_nln_csv(path: str | os.PathLike[str], expected_step_s: float | None = 
     """
     path = Path(path)
     with open(path, "rb") as handle:
-        columns = handle.readline().decode("utf-8", "replace").strip().split(",")
-    _check_columns(path, columns)
+        columns = _header(path, handle.readline())
     try:
         table = pacsv.read_csv(
             path,
@@ -142,7 +144,7 @@ def parse_nln_csv(path: str | os.PathLike[str], expected_step_s: float | None = 
             ),
         )
     except pa.ArrowInvalid:
-        raise DataFileError(f"{path}: {_locate(path, len(columns))}") from None
+        raise DataFileError(f"{path}: {_locate(path, columns)}") from None
     data = _check_values(path, table, columns)
     if data.shape[1] < 2:
         raise DataFileError(f"{path}: fewer than two data rows")

@@ -15,25 +15,32 @@ variable (optional)       CSV column name or MATLAB variable
 speed (optional)          operating point label
 ========================  =====================================================
 
-Rows sharing (recording_id, channel) are the acquisitions of one
-:class:`Recording`, in manifest order. A missing file is reported in
-``skipped`` with the manifest line; an unknown column or a bad value is an
-:class:`SDTError` naming the field.
+Rows sharing (machine, recording_id, channel) are the acquisitions of one
+:class:`Recording`, in manifest order; its ``recording_id`` is
+``machine/recording_id/channel``, so two machines may reuse run names (as
+NLN-EMP does: ``healthy 1`` exists on every motor) and both are read, each as
+its own recording. A missing or unreadable file is reported in ``skipped``
+with the manifest line; an unknown column, a bad value (a severity of 1.7),
+an exact duplicate row or a signal file listed twice is an :class:`SDTError`
+naming the lines: counting the same samples twice would leak them across a
+train/test split.
 """
 
 from __future__ import annotations
 
+import math
 import os
 from functools import partial
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-import pandas as pd
 
 from ..errors import SDTError
+from .manifest_table import ManifestRow, read_manifest_rows
 from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
 from .signal_files import read_signal, signal_shape
+from .tokens import quote
 
 __all__ = ["REQUIRED", "UNITS_TO_G", "open_manifest"]
 
@@ -42,24 +49,28 @@ OPTIONAL = ("machine", "units", "variable", "speed")
 UNITS_TO_G = {"g": 1.0, "mg": 1e-3, "m/s^2": 1.0 / 9.80665}
 
 
-def _read_table(path: Path) -> pd.DataFrame:
-    if not path.is_file():
-        raise SDTError(f"manifest {path} not found")
-    suffix = path.suffix.lower()
-    if suffix == ".csv":
-        return pd.read_csv(path, dtype=str, keep_default_na=False)
-    if suffix == ".parquet":
-        return pd.read_parquet(path).astype(object).where(lambda d: d.notna(), "")
-    raise SDTError(f"manifest {path}: unsupported type {suffix!r}; use .csv or .parquet")
+def _cell(row: ManifestRow, field: str) -> str:
+    return row.cells.get(field, "").strip()
 
 
-def _cell(row: pd.Series, field: str) -> str:
-    value = row.get(field, "")
-    return "" if value is None else str(value).strip()
+def _severity(where: str, text: str) -> int | None:
+    """An integer level, or None when empty; 2.0 (Parquet floats) is 2, 1.7 is refused."""
+    if not text or text.lower() == "nan":
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value == int(value)):
+        raise SDTError(
+            f"{where}: field 'severity' = {quote(text)} is not an integer; give a whole "
+            f"fault level (1, 2, ...) or leave it empty for healthy"
+        )
+    return int(value)
 
 
-def _row_fields(manifest: Path, line: int, row: pd.Series) -> dict[str, Any]:
-    where = f"manifest {manifest} line {line}"
+def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
+    where = f"manifest {manifest} {row.where}"
     for field in ("path", "condition", "recording_id", "channel"):
         if not _cell(row, field):
             raise SDTError(
@@ -72,22 +83,19 @@ def _row_fields(manifest: Path, line: int, row: pd.Series) -> dict[str, Any]:
             raise ValueError
     except ValueError:
         raise SDTError(
-            f"{where}: field 'sampling_rate_hz' = {_cell(row, 'sampling_rate_hz')!r} "
+            f"{where}: field 'sampling_rate_hz' = {quote(_cell(row, 'sampling_rate_hz'))} "
             f"is not a positive number"
         ) from None
-    text = _cell(row, "severity")
-    try:
-        severity = int(float(text)) if text and text.lower() != "nan" else None
-    except ValueError:
-        raise SDTError(f"{where}: field 'severity' = {text!r} is not an integer") from None
     units = _cell(row, "units") or "g"
     if units not in UNITS_TO_G:
-        raise SDTError(f"{where}: field 'units' = {units!r}; use one of {', '.join(UNITS_TO_G)}")
+        raise SDTError(
+            f"{where}: field 'units' = {quote(units)}; use one of {', '.join(UNITS_TO_G)}"
+        )
     file = Path(_cell(row, "path")).expanduser()
     return {
         "file": file if file.is_absolute() else manifest.parent / file,
         "rate": rate,
-        "severity": severity,
+        "severity": _severity(where, _cell(row, "severity")),
         "units": units,
         "variable": _cell(row, "variable") or None,
         "machine": _cell(row, "machine") or "machine",
@@ -95,8 +103,34 @@ def _row_fields(manifest: Path, line: int, row: pd.Series) -> dict[str, Any]:
         "condition": _cell(row, "condition"),
         "run": _cell(row, "recording_id"),
         "channel": _cell(row, "channel"),
-        "line": line,
+        "line": row.number,
+        "where": row.where,
     }
+
+
+def _refuse_duplicates(manifest: Path, header: list[str], rows: list[ManifestRow]) -> None:
+    """An identical row, or one signal (file and variable) on two rows, is an error."""
+    seen: dict[tuple[str, ...], str] = {}
+    for row in rows:
+        key = tuple(_cell(row, name) for name in header)
+        if key in seen:
+            raise SDTError(
+                f"manifest {manifest}: {seen[key]} and {row.where} are identical; remove one "
+                f"(a repeated row would count the same samples twice)"
+            )
+        seen[key] = row.where
+    files: dict[tuple[Path, str], str] = {}
+    for row in rows:
+        file = Path(_cell(row, "path")).expanduser()
+        file = Path(os.path.realpath(file if file.is_absolute() else manifest.parent / file))
+        key2 = (file, _cell(row, "variable"))
+        if key2 in files:
+            variable = f" (variable {quote(key2[1])})" if key2[1] else ""
+            raise SDTError(
+                f"manifest {manifest}: {files[key2]} and {row.where} both read {file}{variable}; "
+                f"list each signal once (twice would count the same samples twice)"
+            )
+        files[key2] = row.where
 
 
 def open_manifest(
@@ -112,12 +146,11 @@ def open_manifest(
         Read every signal now so that bad files land in ``skipped``.
     """
     manifest = Path(path).expanduser()
-    table = _read_table(manifest)
-    columns = [str(c) for c in table.columns]
+    columns, rows = read_manifest_rows(manifest)
     unknown = sorted(set(columns) - set(REQUIRED) - set(OPTIONAL))
     if unknown:
         raise SDTError(
-            f"manifest {manifest}: unknown column(s) {', '.join(map(repr, unknown))}; "
+            f"manifest {manifest}: unknown column(s) {', '.join(map(quote, unknown[:8]))}; "
             f"allowed: {', '.join(REQUIRED + OPTIONAL)}"
         )
     missing = [c for c in REQUIRED if c not in columns]
@@ -125,25 +158,28 @@ def open_manifest(
         raise SDTError(
             f"manifest {manifest}: missing required column(s) {', '.join(map(repr, missing))}"
         )
+    all_fields = [_row_fields(manifest, row) for row in rows]
+    _refuse_duplicates(manifest, columns, rows)
     groups: dict[tuple[str, str, str], list[dict[str, Any]]] = {}
     skipped: list[Skipped] = []
-    for index, row in table.iterrows():
-        fields = _row_fields(manifest, int(index) + 2, row)
+    notes: list[str] = []
+    for fields in all_fields:
         if not fields["file"].is_file():
+            what = "is a folder" if fields["file"].is_dir() else "not found"
             skipped.append(
-                Skipped(
-                    str(fields["file"]),
-                    f"file not found (manifest {manifest} line {fields['line']})",
-                )
+                Skipped(str(fields["file"]), f"file {what} (manifest {manifest} {fields['where']})")
             )
             continue
         try:
-            fields["shape"] = signal_shape(fields["file"], fields["variable"])
+            fields["shape"], note = signal_shape(fields["file"], fields["variable"])
         except DataFileError as exc:
-            skipped.append(Skipped(str(fields["file"]), f"{exc} (manifest line {fields['line']})"))
+            skipped.append(Skipped(str(fields["file"]), f"{exc} (manifest {fields['where']})"))
             continue
+        if note:
+            notes.append(note)
         key = (fields["machine"], fields["run"], fields["channel"])
         groups.setdefault(key, []).append(fields)
+    _refuse_shared_ids(manifest, groups)
     recordings = []
     for (machine, run, channel), rows in groups.items():
         first = rows[0]
@@ -152,12 +188,12 @@ def open_manifest(
         conflict = [k for k, v in meta.items() if len(v) > 1]
         if len(lengths) > 1 or conflict:
             what = ", ".join(conflict) or f"acquisition lengths {sorted(lengths)}"
-            lines = ", ".join(str(r["line"]) for r in rows)
+            lines = ", ".join(r["where"] for r in rows)
             skipped.append(
                 Skipped(
                     str(first["file"]),
-                    f"recording {run!r} channel {channel!r}: "
-                    f"rows disagree on {what} (manifest lines {lines})",
+                    f"machine {machine!r} recording {run!r} channel {channel!r}: "
+                    f"rows disagree on {what} (manifest {manifest} {lines})",
                 )
             )
             continue
@@ -171,7 +207,7 @@ def open_manifest(
                 severity=first["severity"],
                 run=run,
                 channel=channel,
-                recording_id=f"{run}/{channel}",
+                recording_id=f"{machine}/{run}/{channel}",
                 sampling_rate_hz=first["rate"],
                 units=first["units"],
                 n_acquisitions=n_acq,
@@ -183,10 +219,27 @@ def open_manifest(
                 ),
             )
         )
-    dataset = Dataset(name, recordings, skipped)
+    if len(notes) > 1:
+        notes = [f"{len(notes)} CSV files had a time column, dropped; first: {notes[0]}"]
+    dataset = Dataset(name, recordings, skipped, notes)
     if validate:
         dataset.validate()
     return dataset
+
+
+def _refuse_shared_ids(
+    manifest: Path, groups: dict[tuple[str, str, str], list[dict[str, Any]]]
+) -> None:
+    """Two groups whose ids collide ('/' inside a name): refuse, naming a line of each."""
+    seen: dict[str, str] = {}
+    for (machine, run, channel), rows in groups.items():
+        rid = f"{machine}/{run}/{channel}"
+        if rid in seen:
+            raise SDTError(
+                f"manifest {manifest}: {seen[rid]} and {rows[0]['where']} give the same "
+                f"recording id {quote(rid, 60)}; avoid '/' in machine, recording_id and channel"
+            )
+        seen[rid] = rows[0]["where"]
 
 
 def _load_rows(rows: tuple[tuple[Path, str | None, str], ...]) -> np.ndarray:

@@ -128,13 +128,21 @@ class Dataset:
     """A named collection of recordings plus what was skipped while finding them.
 
     Subclasses only discover recordings; loading, failure bookkeeping and the
-    summary live here once.
+    summary live here once. ``notes`` are things a reader did to the data that
+    a user should know (a CSV time column dropped), one line each.
     """
 
-    def __init__(self, name: str, recordings: list[Recording], skipped: list[Skipped]) -> None:
+    def __init__(
+        self,
+        name: str,
+        recordings: list[Recording],
+        skipped: list[Skipped],
+        notes: list[str] | None = None,
+    ) -> None:
         self.name = name
         self._recordings = list(recordings)
         self._skipped = list(skipped)
+        self.notes = list(notes or [])
 
     def recordings(self) -> list[Recording]:
         """Every usable recording (metadata only; nothing is read)."""
@@ -182,6 +190,7 @@ class Dataset:
             "dataset": self.name,
             "recordings": [r.metadata() for r in recs],
             "skipped": [s.as_dict() for s in self._skipped],
+            "notes": list(self.notes),
             "summary": {
                 "recordings": len(recs),
                 "runs": len(self.runs()),

@@ -3,8 +3,11 @@
 Every file becomes a float64 array (n_acquisitions, n_samples). A 1-D signal
 is one acquisition. A 2-D array holds several acquisitions; its longer axis is
 time (MATLAB users store signals as columns, numpy users as rows, and an
-acquisition is always longer than the number of acquisitions). CSV: the named
-column, or every column except ``time``.
+acquisition is always longer than the number of acquisitions). CSV follows the
+same rule through :func:`~sdt_framework.data.csv_signal.read_csv_signal`
+(header and time column detected; the named column, or every other column).
+A file that cannot be opened is a :class:`DataFileError`, never an ``OSError``,
+so a bad row lands in ``skipped`` and the others are read.
 """
 
 from __future__ import annotations
@@ -12,10 +15,10 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-import pyarrow as pa
-import pyarrow.csv as pacsv
 
+from .csv_signal import read_csv_signal
 from .recording import DataFileError
+from .tokens import brief, quote
 
 __all__ = ["read_signal", "signal_shape"]
 
@@ -35,59 +38,49 @@ def _mat_variable(file: Path, variable: str | None) -> tuple[str, tuple[int, ...
 
     try:
         found = {name: shape for name, shape, _ in scipy.io.whosmat(file)}
-    except (ValueError, OSError, NotImplementedError) as exc:
-        raise DataFileError(f"{file}: not a readable MATLAB file ({exc})") from None
+    except OSError as exc:
+        raise DataFileError(f"{file}: cannot read ({exc.strerror or brief(exc)})") from None
+    except (ValueError, NotImplementedError, TypeError) as exc:
+        raise DataFileError(f"{file}: not a readable MATLAB file ({brief(exc)})") from None
     if variable is None:
         if len(found) != 1:
-            raise DataFileError(f"{file}: holds variables {sorted(found)}; name one in 'variable'")
+            raise DataFileError(
+                f"{file}: holds variables {_names(sorted(found))}; name one in 'variable'"
+            )
         variable = next(iter(found))
     if variable not in found:
-        raise DataFileError(f"{file}: no variable {variable!r}; found {sorted(found)}")
+        raise DataFileError(f"{file}: no variable {quote(variable)}; found {_names(sorted(found))}")
     return variable, found[variable]
 
 
-def _csv_columns(file: Path, variable: str | None) -> np.ndarray:
+def _names(names: list[str]) -> str:
+    """At most 8 names, each a short token (names come from the file)."""
+    return ", ".join(quote(n) for n in names[:8]) + (", ..." if len(names) > 8 else "")
+
+
+def _load_npy(file: Path, **options: object) -> np.ndarray:
     try:
-        table = pacsv.read_csv(file, convert_options=pacsv.ConvertOptions(null_values=[""]))
-    except pa.ArrowInvalid as exc:
-        raise DataFileError(f"{file}: {exc}") from None
-    names = [n for n in table.column_names if n.lower() != "time"]
-    names = names if variable is None else [variable]
-    if variable is not None and variable not in table.column_names:
-        raise DataFileError(f"{file}: no column {variable!r}; found {table.column_names}")
-    rows = []
-    for name in names:
-        column = table.column(name)
-        if not pa.types.is_floating(column.type) and not pa.types.is_integer(column.type):
-            values = column.to_pylist()
-            for row, value in enumerate(values):
-                try:
-                    float(value)
-                except (TypeError, ValueError):
-                    raise DataFileError(
-                        f"{file}: line {row + 2}, column {name!r}: {value!r} is not a number"
-                    ) from None
-        if column.null_count:
-            row = int(np.flatnonzero(column.is_null().to_numpy(zero_copy_only=False))[0])
-            raise DataFileError(f"{file}: line {row + 2}, column {name!r}: empty value")
-        rows.append(np.asarray(column.to_numpy(zero_copy_only=False), dtype=np.float64))
-    if not rows:
-        raise DataFileError(f"{file}: no signal column")
-    return np.vstack(rows)
+        return np.load(file, allow_pickle=False, **options)  # type: ignore[call-overload]
+    except OSError as exc:
+        raise DataFileError(f"{file}: cannot read ({exc.strerror or brief(exc)})") from None
+    except (ValueError, EOFError) as exc:
+        raise DataFileError(f"{file}: not a readable NPY file ({brief(exc)})") from None
 
 
-def signal_shape(file: Path, variable: str | None) -> tuple[int, int]:
-    """(n_acquisitions, n_samples) of a signal file, reading as little as possible."""
+def signal_shape(file: Path, variable: str | None) -> tuple[tuple[int, int], str | None]:
+    """((n_acquisitions, n_samples), note) of a signal file, reading as little as possible.
+
+    ``note`` says which time column of a CSV is dropped (None otherwise). A
+    CSV is parsed in full (its shape depends on its header and time column).
+    """
     suffix = file.suffix.lower()
     if suffix == ".npy":
-        try:
-            return _orient(file, np.load(file, mmap_mode="r", allow_pickle=False).shape)
-        except ValueError as exc:
-            raise DataFileError(f"{file}: not a readable NPY file ({exc})") from None
+        return _orient(file, _load_npy(file, mmap_mode="r").shape), None
     if suffix == ".mat":
-        return _orient(file, _mat_variable(file, variable)[1])
+        return _orient(file, _mat_variable(file, variable)[1]), None
     if suffix == ".csv":
-        return _csv_columns(file, variable).shape  # type: ignore[return-value]
+        parsed = read_csv_signal(file, variable)
+        return parsed.data.shape, parsed.note  # type: ignore[return-value]
     raise DataFileError(f"{file}: unsupported file type {suffix!r}; use {', '.join(SUFFIXES)}")
 
 
@@ -95,17 +88,25 @@ def read_signal(file: Path, variable: str | None) -> np.ndarray:
     """The samples of a signal file as float64 (n_acquisitions, n_samples), all finite."""
     suffix = file.suffix.lower()
     if suffix == ".npy":
-        data = np.load(file, allow_pickle=False)
+        data = _load_npy(file)
     elif suffix == ".mat":
         import scipy.io
 
         name, _ = _mat_variable(file, variable)
-        data = scipy.io.loadmat(file, variable_names=[name])[name]
+        try:
+            data = scipy.io.loadmat(file, variable_names=[name])[name]
+        except OSError as exc:
+            raise DataFileError(f"{file}: cannot read ({exc.strerror or brief(exc)})") from None
+        except (ValueError, NotImplementedError, TypeError) as exc:
+            raise DataFileError(f"{file}: not a readable MATLAB file ({brief(exc)})") from None
     elif suffix == ".csv":
-        return _finite(file, _csv_columns(file, variable), "line", 2)
+        return read_csv_signal(file, variable).data  # every value checked finite
     else:
         raise DataFileError(f"{file}: unsupported file type {suffix!r}; use {', '.join(SUFFIXES)}")
-    data = np.asarray(data, dtype=np.float64)
+    try:
+        data = np.asarray(data, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise DataFileError(f"{file}: holds {data.dtype} values, not numbers") from None
     _orient(file, data.shape)  # rejects 0-D and >2-D arrays
     if data.ndim == 2 and 1 in data.shape:
         data = data.reshape(-1)

@@ -46,16 +46,16 @@ def test_formats_units_and_grouping(folder: Path) -> None:
     )
     ds = open_manifest(manifest)
     recs = {r.recording_id: r for r in ds.recordings()}
-    assert set(recs) == {"run-1/x", "run-2/y", "run-2/z"}
-    x = recs["run-1/x"]
+    assert set(recs) == {"rig/run-1/x", "rig/run-2/y", "rig/run-2/z"}  # machine/run/channel
+    x = recs["rig/run-1/x"]
     assert (x.run, x.severity) == ("run-1", None)
     assert (x.n_acquisitions, x.samples_per_acquisition) == (3, 100)
     np.testing.assert_allclose(x.load()[0], np.arange(100) * 1e-3)  # mg -> g
     np.testing.assert_allclose(x.load()[1:], 1e-3)
-    y = recs["run-2/y"]
+    y = recs["rig/run-2/y"]
     assert (y.severity, y.n_acquisitions) == (2, 3)  # MATLAB columns are acquisitions
     np.testing.assert_allclose(y.load(), 2.0)
-    np.testing.assert_allclose(recs["run-2/z"].load(), 1.0)  # 9.80665 m/s^2 = 1 g
+    np.testing.assert_allclose(recs["rig/run-2/z"].load(), 1.0)  # 9.80665 m/s^2 = 1 g
     assert ds.skipped == [] and set(ds.runs()) == {"rig/run-1", "rig/run-2"}
 
 

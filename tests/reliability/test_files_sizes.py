@@ -1,0 +1,119 @@
+"""Sizes checked before allocating: ``validate-noise --windows`` and ``dataset synth --duration``.
+
+On main before the reliability round ``sdt validate-noise --windows 1000000000``
+asked numpy for 100 TB (a MemoryError traceback, or swapping) and
+``sdt dataset synth --duration 1e6`` started generating. Now a size that cannot
+fit is refused with its samples and bytes (even with ``--yes``), and a large or
+long one needs ``--yes``. The estimates are checked against measurement.
+"""
+
+from __future__ import annotations
+
+import sys
+import tracemalloc
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sdt_framework.chain import noise_check
+from sdt_framework.cli.main import main
+from sdt_framework.data import open_synthetic, write_nln_emp
+from sdt_framework.data.synth import FS_HZ, generate_run
+from sdt_framework.registry import build_registry
+
+
+def sdt(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
+    monkeypatch.setattr(sys, "argv", ["sdt", *args])
+    try:
+        main()
+        code = 0
+    except SystemExit as exc:
+        code = exc.code if isinstance(exc.code, int) else 1
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+@pytest.mark.parametrize("yes", [[], ["--yes"]])
+def test_noise_check_that_cannot_fit_is_refused(monkeypatch, capsys, yes: list[str]) -> None:
+    args = ["validate-noise", "--sensor", "adxl345", "--windows", "1000000000", *yes]
+    code, _, err = sdt(monkeypatch, capsys, *args)
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    # 10^9 windows x 2048 samples at 3200 Hz <- 20 kHz: 6.4x as many input samples
+    assert "12,799,999,999,995 samples" in err and "TB of memory" in err
+    assert "more than the" in err and "--yes" not in err
+
+
+def test_large_noise_check_needs_yes(monkeypatch, capsys) -> None:
+    monkeypatch.setattr("sdt_framework.cli.guards.LONG_SECONDS", 0.0)
+    code, _, err = sdt(monkeypatch, capsys, "validate-noise", "--sensor", "adxl345")
+    # (8 x 2048 - 1) x 20000 / 3200 + 1 input samples give 8 x 2048 outputs at 3200 Hz
+    assert code == 2 and "pass --yes to run it" in err and "102,395 samples" in err
+    code, out, err = sdt(monkeypatch, capsys, "validate-noise", "--sensor", "adxl345", "--yes")
+    assert code == 0 and "Noise RMS" in out, err
+
+
+@pytest.mark.parametrize("yes", [[], ["--yes"]])
+def test_synth_that_cannot_fit_is_refused(monkeypatch, capsys, tmp_path: Path, yes) -> None:
+    out = tmp_path / "syn"
+    args = ["dataset", "synth", "--out", str(out), "--duration", "1e6", *yes]
+    code, _, err = sdt(monkeypatch, capsys, *args)
+    assert code == 2 and err.count("\n") == 1
+    assert "5,200,000,000,000 samples" in err and "more than the" in err  # 260 x 1e6 s x 20 kHz
+    assert not out.exists()
+
+
+def test_long_synth_needs_yes(monkeypatch, capsys, tmp_path: Path) -> None:
+    monkeypatch.setattr("sdt_framework.cli.guards.LONG_SECONDS", 0.0)
+    args = ["dataset", "synth", "--out", str(tmp_path / "syn"), "--duration", "0.25"]
+    code, _, err = sdt(monkeypatch, capsys, *args)
+    assert code == 2 and "1,300,000 samples" in err and "pass --yes" in err
+    assert not (tmp_path / "syn").exists()
+    code, _, err = sdt(monkeypatch, capsys, *args, "--yes")
+    assert code == 0 and "wrote 260 files" in err
+
+
+def test_synth_disk_estimate_matches_what_is_written(tmp_path: Path) -> None:
+    from sdt_framework.data.sizes import synth_cost
+
+    dataset = open_synthetic(duration=0.5, acquisitions=3, machines="Motor-2", channels="ch1")
+    written = sum(p.stat().st_size for p in write_nln_emp(dataset, tmp_path))
+    estimate = synth_cost(len(dataset.recordings()), 1, 3, 0.5, FS_HZ).disk_bytes
+    assert 0.8 < estimate / written < 1.5, (estimate, written)
+
+
+def test_synth_memory_estimate_bounds_the_measured_peak() -> None:
+    from sdt_framework.data.sizes import synth_cost
+
+    duration = 0.5
+    tracemalloc.start()
+    channels = ("ch1", "ch2", "ch3", "ch4", "ch5")
+    generate_run(
+        "Motor-4",
+        "cavitation suction",
+        4,
+        channels=channels,
+        acquisitions=1,
+        duration_s=duration,
+        seed=0,
+    )
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    n = len(open_synthetic(duration=duration).recordings())
+    estimate = synth_cost(n, 5, 1, duration, FS_HZ).memory_bytes
+    assert peak < estimate < 3 * peak, (peak, estimate)
+
+
+@pytest.mark.parametrize("sensor", ["adxl345", "adxl357", "wilcoxon-786b10"])
+def test_noise_memory_estimate_bounds_the_measured_peak(sensor: str) -> None:
+    from sdt_framework.chain.noise_check import zero_motion_cost
+
+    spec = build_registry().sensor(sensor)
+    n_in, estimate, _ = zero_motion_cost(spec, 20000.0, 32, 2048)
+    tracemalloc.start()
+    result = noise_check(spec, n_windows=32, window_length=2048)
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert result.input_samples == n_in
+    assert peak < estimate < 3 * peak, (peak, estimate)
+    assert np.isfinite(result.sdt.rms_mg).all()
