@@ -17,7 +17,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.csv as pacsv
 
-from .csv_signal import locate_problem
+from .csv_scan import locate_problem
 from .recording import DataFileError
 from .tokens import quote
 
