@@ -52,10 +52,11 @@ _ADVICE = {
     errno.EPERM: "choose a folder you can write to, or fix its permissions",
     errno.EROFS: "the file system is read-only; choose another folder",
     errno.ENOSPC: "the disk is full; free space or choose another folder",
-    errno.EDQUOT: "the disk quota is used up; free space or choose another folder",
     errno.EISDIR: "it is a folder; give a file path",
     errno.ENOTDIR: "a part of the path is a file, not a folder; choose another path",
 }
+if hasattr(errno, "EDQUOT"):  # POSIX only
+    _ADVICE[errno.EDQUOT] = "the disk quota is used up; free space or choose another folder"
 _TEMPORARY = re.compile(r"^\.(?P<name>.+)\.[^.]+\.tmp$")  # sdt_framework.io's temporary names
 
 
