@@ -12,8 +12,9 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-$(STAMP): pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e ".[dev]"
+# the sensor catalogue is a second distribution (plugins/sensors-catalog), installed beside
+$(STAMP): pyproject.toml plugins/sensors-catalog/pyproject.toml | $(BIN)/python
+	$(BIN)/python -m pip install --quiet -e ".[dev]" -e plugins/sensors-catalog
 	touch $(STAMP)
 
 run: $(STAMP)

@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from .errors import SDTError
+from .parts import PartSpec, all_modes, resolve
 from .registry import Registry, build_registry
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
 
@@ -40,17 +41,15 @@ def _fail(spec: Spec, message: str) -> None:
 def _check_sensor(spec: SensorSpec) -> None:
     from .chain import degrade
 
-    fs = 20000.0
-    if spec.sampling_rate_hz > fs:
-        fs = float(spec.sampling_rate_hz)
+    fs = max(20000.0, float(spec.at_rate(20000.0).sampling_rate_hz))
     t = np.arange(int(fs)) / fs
     x = 0.5 * np.sin(2 * np.pi * 80.0 * t)[None, :].repeat(2, axis=0)
     y, rate = degrade(x, fs, spec, seed=1)
-    if rate != spec.sampling_rate_hz:
+    if rate != spec.at_rate(fs).sampling_rate_hz:
         _fail(spec, f"output rate {rate} != sampling_rate_hz {spec.sampling_rate_hz}")
     if y.ndim != 2 or y.shape[0] != 2 or not np.all(np.isfinite(y)):
         _fail(spec, f"degrade returned shape {y.shape} or non-finite values")
-    if spec.requantise:
+    if spec.requantise and spec.full_scale_g is not None and spec.quantisation_step_g:
         if np.max(np.abs(y)) > spec.full_scale_g:
             _fail(spec, "output exceeds the full scale")
         steps = y / spec.quantisation_step_g
@@ -59,6 +58,19 @@ def _check_sensor(spec: SensorSpec) -> None:
     y2, _ = degrade(x, fs, spec, seed=1)
     if not np.array_equal(y, y2):
         _fail(spec, "the same seed gave different outputs")
+
+
+def _check_part(spec: PartSpec) -> None:
+    """Every mode resolves to a valid sensor with a source for every value; the default runs."""
+    for mode in all_modes(spec):
+        try:
+            resolved = resolve(spec, mode)
+        except SDTError as exc:
+            raise ConformanceError(f"{exc} (plugin {spec.plugin!r})") from None
+        for source in resolved.sources:
+            if not (source.source and source.where) and not source.absent:
+                _fail(spec, f"{resolved.sensor.name}: {source.field} has no provenance")
+    _check_sensor(resolve(spec).sensor)
 
 
 def _check_feature_set(spec: FeatureSetSpec) -> None:
@@ -112,6 +124,7 @@ _CHECKS: dict[type[Spec], Callable[[Any], None]] = {
     FeatureSetSpec: _check_feature_set,
     ClassifierSpec: _check_classifier,
     DatasetSpec: _check_dataset,
+    PartSpec: _check_part,
 }
 
 
@@ -141,6 +154,7 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
         *fresh.feature_sets(),
         *fresh.classifiers(),
         *fresh.datasets(),
+        *fresh.parts(),
     ]
     if not specs:
         raise ConformanceError(f"plugin {info.name!r} registers nothing")
@@ -150,7 +164,10 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
         FeatureSetSpec: installed.feature_sets(),
         ClassifierSpec: installed.classifiers(),
         DatasetSpec: installed.datasets(),
+        PartSpec: installed.parts(),
     }
+    taken[SensorSpec] += installed.parts()  # one namespace: a part is used where a sensor is
+    taken[PartSpec] += installed.sensors()
     for spec in specs:
         for other in taken[type(spec)]:
             # The plugin itself, when installed, provides the identical definition.

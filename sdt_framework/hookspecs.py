@@ -58,3 +58,15 @@ def register_datasets(register: Register) -> None:
     Called once when a registry is built. Call ``register(DatasetSpec(...))``
     for each dataset; ``loader(path, **options)`` opens it.
     """
+
+
+@hookspec
+def register_parts(register: Register) -> None:
+    """Provide real parts with operating modes (``sdt_framework.parts.PartSpec``).
+
+    Called once when a registry is built. Call ``register(PartSpec(...))`` for
+    each part (a part file read with ``sdt_framework.parts.load_part_file`` is
+    a PartSpec). A part is used as a sensor by its name, optionally with a mode:
+    ``registry.sensor("adxl355[range=8g]")``. Its name may not equal a sensor
+    profile's.
+    """

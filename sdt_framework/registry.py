@@ -21,6 +21,7 @@ from pydantic import ValidationError
 from . import hookspecs
 from .discovery import ENV_TRACE, LoadedPlugin, PluginInfo, discover, filter_note, filter_warnings
 from .errors import DuplicateNameError, PluginLoadError, UnknownNameError, validation_summary
+from .parts import PartSpec, resolve, split_name
 from .sensor_files import load_sensor_file, sensor_files_from_env
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
 
@@ -34,7 +35,10 @@ HOOKS: dict[str, type[Spec]] = {
     "register_features": FeatureSetSpec,
     "register_classifiers": ClassifierSpec,
     "register_datasets": DatasetSpec,
+    "register_parts": PartSpec,
 }
+#: kinds that share one namespace: a part is used where a sensor is
+_SAME_NAMES = {SensorSpec: PartSpec, PartSpec: SensorSpec}
 
 IN_PROCESS = "(in-process)"
 
@@ -119,6 +123,8 @@ class Registry:
                 return f"invalid {kind.kind} {name!r}: {validation_summary(exc)}"
         if not isinstance(spec, kind):
             return f"registered {type(spec).__name__}, expected {kind.__name__}"
+        if "[" in spec.name:
+            return f"{spec.name!r}: brackets are reserved for part modes"
         staged.append(
             spec.model_copy(update={"plugin": info.name, "distribution": info.distribution})
         )
@@ -127,7 +133,7 @@ class Registry:
     def _commit(self, staged: list[Spec], info: PluginInfo) -> None:
         for spec in staged:
             table = self._items[type(spec)]
-            existing = table.get(spec.name)
+            existing = self._existing(spec)
             if existing is not None:
                 error = DuplicateNameError(
                     spec.kind, spec.name, _describe(existing), _describe(spec)
@@ -140,6 +146,13 @@ class Registry:
             info.provides.setdefault(spec.kind, []).append(spec.name)
             if self._trace:
                 print(f"sdt: {info.name} registered {spec.kind} {spec.name!r}", file=sys.stderr)
+
+    def _existing(self, spec: Spec) -> Spec | None:
+        """A spec already registered under ``spec``'s name in its namespace."""
+        for kind in (type(spec), _SAME_NAMES.get(type(spec))):
+            if kind is not None and spec.name in self._items[kind]:
+                return self._items[kind][spec.name]
+        return None
 
     def _collect(self, loaded: LoadedPlugin) -> PluginInfo:
         info = loaded.info
@@ -201,12 +214,31 @@ class Registry:
         return [self._items[kind][key] for key in sorted(self._items[kind])]  # type: ignore[misc]
 
     def sensor(self, name: str) -> SensorSpec:
-        """The sensor profile called ``name``."""
-        return self._get(SensorSpec, name)
+        """The sensor profile called ``name``, or a part in a mode (``adxl355[range=8g]``).
+
+        A part's sensor is named in canonical form: every mode key, sorted,
+        defaults filled in (``adxl355`` -> ``adxl355[odr=4000,range=2g]``).
+        """
+        if name in self._items[SensorSpec] or (SensorSpec, name) in self._conflicts:
+            return self._get(SensorSpec, name)
+        base, modes = split_name(name)
+        if base in self._items[PartSpec] or (PartSpec, base) in self._conflicts:
+            return resolve(self.part(base), modes).sensor
+        if modes and base in self._items[SensorSpec]:
+            raise UnknownNameError("part", base, self._items[PartSpec])
+        raise UnknownNameError("sensor", name, [*self._items[SensorSpec], *self._items[PartSpec]])
 
     def sensors(self) -> list[SensorSpec]:
-        """All sensor profiles, sorted by name."""
+        """All sensor profiles, sorted by name (parts: :meth:`parts`)."""
         return self._all(SensorSpec)
+
+    def part(self, name: str) -> PartSpec:
+        """The part called ``name`` (without a mode)."""
+        return self._get(PartSpec, name)
+
+    def parts(self) -> list[PartSpec]:
+        """All parts, sorted by name."""
+        return self._all(PartSpec)
 
     def feature_set(self, name: str) -> FeatureSetSpec:
         """The feature set called ``name``."""

@@ -13,7 +13,7 @@ import importlib
 import json
 import re
 from collections.abc import Callable
-from typing import Any, ClassVar, Literal
+from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
@@ -26,8 +26,17 @@ __all__ = [
     "Spec",
 ]
 
-#: a plain name, optionally followed by a design point's settings (``adxl345~rate=1600,nsd=90``)
-_NAME = re.compile(r"^[a-z0-9][a-z0-9._-]*(~[a-z0-9_]+=[a-z0-9.+-]+(,[a-z0-9_]+=[a-z0-9.+-]+)*)?$")
+_NAME = re.compile(r"^[a-z0-9][a-z0-9._-]*$")
+#: a design point's settings after its base name, e.g. ``adxl345~rate=1600,nsd=90``
+POINT_SUFFIX = re.compile(r"~[a-z0-9_]+=[a-z0-9.+-]+(,[a-z0-9_]+=[a-z0-9.+-]+)*$")
+#: a part's operating mode after its name, e.g. ``adxl355[odr=4000,range=8g]``
+MODE_SUFFIX = re.compile(r"\[([a-z0-9_]+=[a-z0-9._+-]+)(,[a-z0-9_]+=[a-z0-9._+-]+)*\]$")
+
+#: rate of a sensor that samples at whatever rate the recording has (the identity reference)
+NATIVE = "native"
+Axis = Literal["x", "y", "z"]
+#: SensorSpec fields that may differ per axis (``SensorSpec.per_axis``)
+AXIS_FIELDS = ("noise_density_ug_rthz", "mech_cutoff_hz")
 #: bytes per value of each on-node feature dtype
 DTYPE_BYTES = {"float16": 2, "float32": 4}
 
@@ -70,13 +79,29 @@ class Spec(BaseModel):
 
 
 class SensorSpec(Spec):
-    """A sensor profile: every parameter of the SDT measurement chain (SPEC section 2)."""
+    """A sensor profile: every parameter of the SDT measurement chain (SPEC section 2).
+
+    A stage whose cutoff is None is not part of the chain. A profile that does
+    not requantise may leave ``full_scale_g`` and ``adc_bits`` as None (the
+    rate-following reference has no range of its own). ``per_axis`` holds the
+    datasheet's figures for the other axes; the profile's own fields are the
+    X axis, and :meth:`for_axis` picks another.
+    """
 
     kind: ClassVar[str] = "sensor"
+    #: optional fields left out of the content hash while unset, so that adding
+    #: them kept the hashes (and feature caches) of existing profiles
+    _hash_if_set: ClassVar[frozenset[str]] = frozenset({"per_axis"})
 
-    sampling_rate_hz: float = Field(gt=0, description="Output data rate F_target, Hz.")
-    full_scale_g: float = Field(gt=0, description="Full-scale range G_max, g (clip at +/-).")
-    adc_bits: int = Field(ge=1, le=32, description="ADC resolution B, bits.")
+    sampling_rate_hz: Annotated[float, Field(gt=0)] | Literal["native"] = Field(
+        description="Output data rate F_target, Hz; 'native': the recording's own rate."
+    )
+    full_scale_g: float | None = Field(
+        gt=0, description="Full-scale range G_max, g (clip at +/-); None only without requantise."
+    )
+    adc_bits: int | None = Field(
+        ge=1, le=32, description="ADC resolution B, bits; None only without requantise."
+    )
     noise_density_ug_rthz: float = Field(ge=0, description="Noise spectral density, ug/sqrt(Hz).")
     inject_noise: bool = Field(
         default=True,
@@ -88,9 +113,13 @@ class SensorSpec(Spec):
         description="Apply saturation and quantisation. False for the chain that made the "
         "recording: its ADC already digitised it, a second rounding would alter the data.",
     )
-    mech_cutoff_hz: float = Field(gt=0, description="Mechanical low-pass cutoff f_mech, Hz.")
+    mech_cutoff_hz: float | None = Field(
+        gt=0, description="Mechanical low-pass cutoff f_mech, Hz (None: no mechanical stage)."
+    )
     mech_order: int = Field(default=2, ge=1, le=12, description="Mechanical filter order.")
-    analog_cutoff_hz: float = Field(gt=0, description="Analog anti-alias cutoff f_ana, Hz.")
+    analog_cutoff_hz: float | None = Field(
+        gt=0, description="Analog anti-alias cutoff f_ana, Hz (None: no analog stage)."
+    )
     analog_order: int = Field(default=1, ge=1, le=12, description="Anti-alias filter order.")
     digital_cutoff_hz: float | None = Field(
         default=None, gt=0, description="On-chip digital low-pass cutoff f_dig, Hz (None: none)."
@@ -98,11 +127,34 @@ class SensorSpec(Spec):
     digital_order: int | None = Field(
         default=None, ge=1, le=16, description="On-chip digital low-pass order."
     )
+    per_axis: dict[Axis, dict[str, float]] | None = Field(
+        default=None,
+        description="Per-axis values of noise_density_ug_rthz / mech_cutoff_hz where the "
+        "datasheet gives them; the fields above are the X axis.",
+    )
+
+    @field_validator("name")
+    @classmethod
+    def _check_name(cls, value: str) -> str:
+        base = MODE_SUFFIX.sub("", POINT_SUFFIX.sub("", value))
+        if not _NAME.match(base):
+            raise ValueError(
+                f"{value!r} is not a valid name: use lower-case letters, digits, '.', '_' or '-'"
+                " (and a part's mode in brackets, e.g. adxl355[range=8g], and a design point's"
+                " settings after '~', e.g. adxl345~rate=1600)"
+            )
+        return value
 
     @model_validator(mode="after")
     def _check_digital(self) -> SensorSpec:
         if (self.digital_cutoff_hz is None) != (self.digital_order is None):
             raise ValueError("digital_cutoff_hz and digital_order must be given together")
+        if self.requantise and (self.full_scale_g is None or self.adc_bits is None):
+            raise ValueError("full_scale_g and adc_bits are required when requantise is true")
+        if self.sampling_rate_hz == NATIVE:
+            if self.digital_cutoff_hz is not None:
+                raise ValueError("a sensor at the 'native' rate cannot have a digital filter")
+            return self
         nyquist = self.sampling_rate_hz / 2
         if self.digital_cutoff_hz is not None and self.digital_cutoff_hz >= nyquist:
             raise ValueError(
@@ -112,9 +164,50 @@ class SensorSpec(Spec):
             )
         return self
 
+    @model_validator(mode="after")
+    def _check_axes(self) -> SensorSpec:
+        for axis, values in (self.per_axis or {}).items():
+            unknown = sorted(set(values) - set(AXIS_FIELDS))
+            if unknown:
+                raise ValueError(f"per_axis.{axis}: {unknown} cannot vary per axis ({AXIS_FIELDS})")
+            if values.get("noise_density_ug_rthz", 0) < 0 or values.get("mech_cutoff_hz", 1) <= 0:
+                raise ValueError(f"per_axis.{axis}: noise must be >= 0 and cutoffs > 0")
+        return self
+
     @property
-    def quantisation_step_g(self) -> float:
-        """ADC step D = 2 G_max / 2**B, in g."""
+    def follows_recording(self) -> bool:
+        """True for a sensor whose rate is the recording's ('native')."""
+        return self.sampling_rate_hz == NATIVE
+
+    def at_rate(self, fs: float) -> SensorSpec:
+        """This profile for a recording at ``fs`` Hz: a 'native' rate becomes ``fs``."""
+        if not self.follows_recording:
+            return self
+        return self.model_copy(update={"sampling_rate_hz": float(fs)})
+
+    def for_axis(self, axis: str) -> SensorSpec:
+        """This profile on ``axis`` ('x', 'y' or 'z'): that axis's datasheet figures, if any."""
+        if axis not in ("x", "y", "z"):
+            raise ValueError(f"axis must be 'x', 'y' or 'z', got {axis!r}")
+        values = (self.per_axis or {}).get(axis)  # type: ignore[call-overload]
+        if not values:
+            return self
+        current = {key: getattr(self, key) for key in values}
+        return self if current == values else self.model_copy(update=dict(values))
+
+    def content_dict(self) -> dict[str, Any]:
+        """Behaviour-defining fields (provenance and unset optional fields excluded)."""
+        data = super().content_dict()
+        for key in self._hash_if_set:
+            if data.get(key) is None:
+                data.pop(key, None)
+        return data
+
+    @property
+    def quantisation_step_g(self) -> float | None:
+        """ADC step D = 2 G_max / 2**B, in g (None without a range and resolution)."""
+        if self.full_scale_g is None or self.adc_bits is None:
+            return None
         return 2.0 * self.full_scale_g / 2.0**self.adc_bits
 
 

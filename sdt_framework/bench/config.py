@@ -53,8 +53,21 @@ class BenchmarkConfig(BaseModel):
     )
     machines: list[str] | None = Field(default=None, description="Machines to use (all).")
     channels: list[str] | None = Field(default=None, description="Channels to use (all).")
-    sensors: list[str] | None = Field(default=None, description="Sensor names (all registered).")
-    reference: str = Field(default="wilcoxon-786b10", description="Reference sensor for deltas.")
+    sensors: list[str] | None = Field(
+        default=None,
+        description="Sensor names, parts with a mode as 'adxl355[range=8g]' (default: the "
+        "reference, adxl345, adxl357).",
+    )
+    reference: str | None = Field(
+        default=None,
+        description="Reference sensor for deltas (default: wilcoxon-786b10 for 20 kHz data, "
+        "native-reference otherwise).",
+    )
+    axes: dict[str, Literal["x", "y", "z"]] = Field(
+        default_factory=dict,
+        description="Sensor axis each channel is mounted on, e.g. {ch3 = 'z'} (default x): "
+        "a part's per-axis noise follows it.",
+    )
     classifiers: list[str] | None = Field(default=None, description="Classifiers (all).")
     features: str = Field(default="paper8", description="Feature set, e.g. 'paper8+env_bpfo'.")
     feature_dtype: Literal["float16", "float32"] | None = Field(

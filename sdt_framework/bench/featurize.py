@@ -1,7 +1,8 @@
 """Stage 1 of a benchmark: recording -> SDT chain -> windows -> features, cached.
 
 One task per recording: its samples are read once, then degraded by every
-sensor for every repetition and featurised. Repetition ``r`` draws the SDT
+sensor (with the figures of the axis its channel is mounted on) for every
+repetition and featurised. Repetition ``r`` draws the SDT
 noise from ``derive_seed(seed, "noise", r, recording_id)``, so results do not
 depend on the order or the process a task runs in. A profile that injects no
 noise (the reference) is deterministic: it is computed once and shared by all
@@ -61,6 +62,7 @@ class FeatureJob:
     window_s: float
     settle_s: float
     cache_dir: str | None
+    axis: str = "x"  # the sensor axis this recording's channel is mounted on
 
 
 def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) -> int | None:
@@ -120,7 +122,8 @@ def featurize_recording(job: FeatureJob) -> list[FeatureBlock]:
     """Features of one recording for every (sensor, repetition) of the job."""
     data: np.ndarray | None = None
     blocks: list[FeatureBlock] = []
-    for sensor in job.sensors:
+    for named in job.sensors:
+        sensor = named.for_axis(job.axis)  # a part's per-axis figures; the name stays
         done: dict[int | None, FeatureBlock] = {}
         for repeat in range(job.repeats):
             chain_seed = noise_seed(sensor, job.seed, repeat, job.recording.recording_id)

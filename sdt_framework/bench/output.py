@@ -4,7 +4,9 @@ results.parquet / results.csv   one row per run (tidy)
 per_class.parquet               precision, recall, F1, support per class per run
 confusion.parquet               confusion-matrix counts per run (long form)
 allocation.csv                  the train/test allocation used
-skipped.csv                     (machine, scenario) pairs that could not be scored, and why
+skipped.csv                     (machine, scenario) pairs that could not be scored and
+                                sensors the data cannot simulate ("all" in the other
+                                columns), and why
 features.parquet                repetition-0 features of every window, per sensor (for plots)
 config.toml                     the fully resolved, re-runnable configuration
 table4.md                       the paper's Table 4 layout, mean +/- SD Macro F1
@@ -78,8 +80,9 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
     write_frame(confusion, out / "confusion.parquet")
     write_frame(plan.allocation, out / "allocation.csv")
     skipped = pd.DataFrame(
-        [(m, s, reason) for (m, s), reason in sorted(plan.skipped.items())],
-        columns=["machine", "scenario", "reason"],
+        [(m, s, "all", reason) for (m, s), reason in sorted(plan.skipped.items())]
+        + [("all", "all", name, reason) for name, reason in plan.skipped_sensors.items()],
+        columns=["machine", "scenario", "sensor", "reason"],
     )
     write_frame(skipped, out / "skipped.csv")
     write_frame(result.features[result.features["repeat"] == 0], out / "features.parquet")
@@ -102,6 +105,10 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
         "skipped": [
             {"machine": m, "scenario": s, "reason": r} for (m, s), r in sorted(plan.skipped.items())
         ],
+        "skipped_sensors": [
+            {"sensor": name, "reason": reason} for name, reason in plan.skipped_sensors.items()
+        ],
+        "reference": plan.reference,
         "dataset_skipped": [s.as_dict() for s in plan.dataset.skipped],
         "seconds": result.seconds,
         "software": software_versions(),

@@ -5,8 +5,9 @@ into a :class:`Plan`: the dataset opened (metadata only), the recordings of the
 selected machines and channels, the sensor, classifier and feature-set specs
 from the registry, and the train/test allocation with the (machine, scenario)
 pairs that cannot be scored. Unknown names, dataset options the loader does
-not take, a sensor faster than the data and acquisitions too short for one
-window are each one clear error here, so a sweep never fails half-way.
+not take and acquisitions too short for one window are each one clear error
+here, so a sweep never fails half-way; a sensor the data is too slow for is
+left out with its reason (:mod:`~sdt_framework.bench.sensor_set`).
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from __future__ import annotations
 import hashlib
 import json
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import pandas as pd
@@ -27,6 +28,7 @@ from ..registry import Registry
 from ..specs import ClassifierSpec, FeatureSetSpec, SensorSpec
 from .config import BenchmarkConfig
 from .scenarios import Run, check_allocation, load_allocation, rule_allocation
+from .sensor_set import default_reference, default_sensor_names, screen_sensors
 
 __all__ = ["Plan", "plan_benchmark"]
 
@@ -44,6 +46,8 @@ class Plan:
     feature_set: FeatureSetSpec
     allocation: pd.DataFrame
     skipped: dict[tuple[str, str], str]
+    skipped_sensors: dict[str, str] = field(default_factory=dict)
+    reference: str = "wilcoxon-786b10"
 
 
 def _pick(names: list[str] | None, lookup: Callable[[str], Any], everything: list) -> list:
@@ -61,7 +65,7 @@ def _select(values: list[str] | None, available: set[str], what: str) -> set[str
 
 def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     """Resolve every name and check the data before any work starts."""
-    sensors = _pick(config.sensors, registry.sensor, registry.sensors())
+    sensors = _resolve_sensors(config.sensors, registry) if config.sensors else None
     classifiers = _pick(config.classifiers, registry.classifier, registry.classifiers())
     feature_set = resolve_feature_set(registry, config.features)
     if config.feature_dtype is not None:
@@ -73,6 +77,11 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     machines = _select(config.machines, {r.machine for r in recordings}, "machine(s)")
     channels = _select(config.channels, {r.channel for r in recordings}, "channel(s)")
     recordings = [r for r in recordings if r.machine in machines and r.channel in channels]
+    rates = {r.sampling_rate_hz for r in recordings}
+    if sensors is None:
+        sensors = _resolve_sensors(default_sensor_names(rates), registry)
+    _select(list(config.axes) or None, channels, "channel(s) in axes")
+    sensors, skipped_sensors = screen_sensors(sensors, recordings, config.axes)
     _check_rates(recordings, sensors, config)
 
     runs = sorted(
@@ -106,7 +115,20 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
         feature_set,
         allocation,
         skipped,
+        skipped_sensors,
+        config.reference or default_reference(rates),
     )
+
+
+def _resolve_sensors(names: list[str], registry: Registry) -> list[SensorSpec]:
+    """Resolve every name; two names for one sensor (``adxl355``, ``adxl355[range=2g]``) fail."""
+    sensors = [registry.sensor(name) for name in names]
+    seen: dict[str, str] = {}
+    for name, sensor in zip(names, sensors, strict=True):
+        if sensor.name in seen:
+            raise SDTError(f"sensors {seen[sensor.name]!r} and {name!r} are both {sensor.name}")
+        seen[sensor.name] = name
+    return sensors
 
 
 def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
@@ -133,16 +155,9 @@ def _check_rates(recordings: list[Recording], sensors: list[SensorSpec], config)
         example = next(r for r in recordings if r.sampling_rate_hz == rate)
         seconds = example.samples_per_acquisition / rate
         for sensor in sensors:
-            if sensor.sampling_rate_hz > rate:
-                raise SDTError(
-                    f"sensor {sensor.name!r} samples at {sensor.sampling_rate_hz:g} Hz, above the "
-                    f"data's {rate:g} Hz (e.g. {example.source}); drop it from --sensors or use "
-                    f"data recorded at least that fast"
-                )
-            need = samples_for(config.window_s, sensor.sampling_rate_hz) + samples_for(
-                config.settle_s, sensor.sampling_rate_hz
-            )
-            if seconds * sensor.sampling_rate_hz < need:
+            target = float(sensor.at_rate(rate).sampling_rate_hz)
+            need = samples_for(config.window_s, target) + samples_for(config.settle_s, target)
+            if seconds * target < need:
                 raise SDTError(
                     f"acquisitions of {seconds:g} s are too short for one {config.window_s} s "
                     f"window after {config.settle_s} s settling (e.g. {example.source})"

@@ -61,6 +61,8 @@ def _run_key(
         plan.config.settle_s,
         part[["run", "side"]].to_numpy().tolist(),
     ]
+    if plan.config.axes:  # channel -> axis changes a part's noise (left out when unset: keys stay)
+        parts.append(sorted(plan.config.axes.items()))
     return hashlib.sha256(json.dumps(parts, sort_keys=True, default=str).encode()).hexdigest()[:24]
 
 
@@ -185,6 +187,7 @@ def run_benchmark(
             config.window_s,
             config.settle_s,
             cache_dir,
+            config.axes.get(r.channel, "x"),
         )
         for r in plan.recordings
     ]

@@ -13,6 +13,8 @@ noise_check(sensor, ...), NoiseCheck, plot_noise_check(result, path)
 ChainInputError, ChainInputTypeError
     The one-line error for a recording or rate the chain cannot take (the second
     one, for samples that are not real numbers, is also a TypeError).
+simulation_problem(sensor, fs)
+    Why a recording at fs Hz is too slow to simulate a sensor (None if it is not).
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from .errors import ChainInputError, ChainInputTypeError
 from .filters import design_lowpass, is_skipped, lowpass_gain
 from .noise_check import NoiseCheck, WindowStats, noise_check, window_stats
 from .noise_plot import plot_noise_check
+from .simulable import simulation_problem
 from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise, sample_grid
 
 __all__ = [
@@ -45,5 +48,6 @@ __all__ = [
     "noise_check",
     "plot_noise_check",
     "sample_grid",
+    "simulation_problem",
     "window_stats",
 ]

@@ -32,19 +32,20 @@ _BLOCK_VALUES = 1 << 19  # float64 values per block of rows: 4 MB
 def build_stages(sensor: SensorSpec, fs: float) -> tuple[Stage, ...]:
     """The stages of ``sensor``'s chain for a recording at ``fs`` Hz, in order.
 
-    Left out: any low-pass whose cutoff is at or above the Nyquist of the rate
-    it runs at (documented skip rule), the sampling stage when the target rate
+    Left out: any low-pass whose cutoff is None or at or above the Nyquist of
+    the rate it runs at (documented skip rule), the sampling stage when the target rate
     equals ``fs`` (interpolating on the same grid is the identity), the
     quantiser when ``sensor.requantise`` is False. The noise stage is kept when
     ``inject_noise`` is True; a call can still switch it off.
     """
-    target = sensor.sampling_rate_hz
+    sensor = sensor.at_rate(fs)
+    target = float(sensor.sampling_rate_hz)
     stages: list[Stage] = []
     for name, order, cutoff in (
         ("mechanical", sensor.mech_order, sensor.mech_cutoff_hz),
         ("analog", sensor.analog_order, sensor.analog_cutoff_hz),
     ):
-        sos = design_lowpass(order, cutoff, fs)
+        sos = None if cutoff is None else design_lowpass(order, cutoff, fs)
         if sos is not None:
             stages.append(LowPass(name, fs, sos))
     if target != fs:
@@ -55,7 +56,7 @@ def build_stages(sensor: SensorSpec, fs: float) -> tuple[Stage, ...]:
         sos = design_lowpass(sensor.digital_order, sensor.digital_cutoff_hz, target)
         if sos is not None:
             stages.append(LowPass("digital", target, sos))
-    if sensor.requantise:
+    if sensor.requantise and sensor.full_scale_g is not None and sensor.adc_bits is not None:
         stages.append(Quantise(target, sensor.full_scale_g, sensor.adc_bits))
     return tuple(stages)
 
@@ -145,10 +146,12 @@ def _compile(keyed: _ByContent, fs: float) -> Chain:
 def compile_chain(sensor: SensorSpec, fs: float, *, label: str = "") -> Chain:
     """The chain of ``sensor`` for a recording at ``fs`` Hz, designed once and cached.
 
-    Raises :class:`~sdt_framework.chain.ChainInputError` if the target rate is
-    above ``fs`` or the digital cutoff is at or above the target Nyquist.
+    A sensor at the 'native' rate takes ``fs`` as its rate. Raises
+    :class:`~sdt_framework.chain.ChainInputError` if the target rate is above
+    ``fs`` or the digital cutoff is at or above the target Nyquist.
     """
-    return _compile(_ByContent(sensor), check_rates(fs, sensor, label))
+    fs = check_rates(fs, sensor, label)
+    return _compile(_ByContent(sensor.at_rate(fs)), fs)
 
 
 def degrade(

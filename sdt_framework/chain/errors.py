@@ -87,7 +87,7 @@ def check_rates(fs: float, sensor: SensorSpec, label: str) -> float:
     fs = float(fs)
     if not math.isfinite(fs) or fs <= 0:
         raise ChainInputError(sensor.name, label, f"recording rate must be > 0 Hz, got {fs:g}")
-    target = sensor.sampling_rate_hz
+    target = float(sensor.at_rate(fs).sampling_rate_hz)
     if target > fs:
         raise ChainInputError(
             sensor.name,

@@ -94,7 +94,7 @@ def window_stats(
 
 def zero_motion_length(sensor: SensorSpec, fs_ref: float, samples_out: int) -> int:
     """Smallest input length N at ``fs_ref`` whose chain output has ``samples_out`` samples."""
-    ratio = Fraction(fs_ref) / Fraction(sensor.sampling_rate_hz)
+    ratio = Fraction(fs_ref) / Fraction(float(sensor.at_rate(fs_ref).sampling_rate_hz))
     return math.ceil((samples_out - 1) * ratio) + 1
 
 
@@ -222,7 +222,7 @@ def noise_check(
     )
     if rec is None:
         return result
-    rec_fs = float(recording_fs) if recording_fs is not None else sensor.sampling_rate_hz
+    rec_fs = float(recording_fs) if recording_fs is not None else fs_out
     return NoiseCheck(
         **{
             **result.__dict__,

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 import typer
+from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 from rich.table import Table
 
@@ -15,6 +16,13 @@ from .common import console, err_console, registry
 
 def _names(value: str | None) -> list[str] | None:
     return [part.strip() for part in value.split(",") if part.strip()] if value else None
+
+
+def _sensor_names(value: str | None) -> list[str] | None:
+    """Comma-separated sensor names; commas inside a part's mode brackets stay."""
+    from ..parts import split_names
+
+    return split_names(value) or None if value else None
 
 
 def _print_table4(results: Any, sensor_order: list[str]) -> None:
@@ -46,7 +54,10 @@ def _print_table4(results: Any, sensor_order: list[str]) -> None:
                         else f"{mean:.4f}" + ("" if sd != sd else f"\n±{sd:.4f}")
                     )
                 out.add_row(
-                    scenario if i == 0 else "", sensor, *cells, end_section=i == len(sensors) - 1
+                    scenario if i == 0 else "",
+                    escape(sensor),
+                    *cells,
+                    end_section=i == len(sensors) - 1,
                 )
         console.print(out)
 
@@ -56,7 +67,12 @@ def benchmark(
     config_file: Path | None = typer.Argument(None, help="TOML config ([benchmark] table)."),
     data: str | None = typer.Option(None, "--data", help="NLN-EMP root folder or manifest."),
     dataset: str | None = typer.Option(None, "--dataset", help="Registered dataset name."),
-    sensors: str | None = typer.Option(None, "--sensors", help="Comma-separated sensor names."),
+    sensors: str | None = typer.Option(
+        None,
+        "--sensors",
+        help="Comma-separated sensor names; a part with a mode as adxl355[range=8g,odr=4000] "
+        "(default: the reference, adxl345, adxl357).",
+    ),
     classifiers: str | None = typer.Option(None, "--classifiers", help="Comma-separated."),
     features: str | None = typer.Option(None, "--features", help="Feature set, e.g. paper8."),
     feature_dtype: str | None = typer.Option(
@@ -98,6 +114,8 @@ def benchmark(
 
       sdt benchmark --sensors adxl345,adxl357 --classifiers lr,rf --repeats 5
 
+      sdt benchmark --quick --sensors "adxl355[range=8g],iis3dwb,mpu6050"
+
       sdt benchmark --data /data/NLN-EMP --out results/nln --jobs 2
     """
     # Imported here so that `sdt --help` and the listing commands start fast.
@@ -108,7 +126,7 @@ def benchmark(
     given: dict[str, Any] = {
         "data": data,
         "dataset": dataset,
-        "sensors": _names(sensors),
+        "sensors": _sensor_names(sensors),
         "classifiers": _names(classifiers),
         "features": features,
         "feature_dtype": feature_dtype,
@@ -131,6 +149,8 @@ def benchmark(
     config = load_config(config_file, overrides)
     plan = plan_benchmark(config, registry(ctx))
     out_dir = out or Path("results") / dt.datetime.now().strftime("%Y%m%d-%H%M%S")
+    for name, reason in plan.skipped_sensors.items():
+        err_console.print(f"[yellow]skipped[/] sensor {escape(name)}: {escape(reason)}")
     for (machine, scenario), reason in sorted(plan.skipped.items()):
         err_console.print(f"skipped {machine} / {scenario}: {reason}", highlight=False)
     console.print(

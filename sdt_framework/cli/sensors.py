@@ -1,59 +1,87 @@
-"""``sdt sensors``: the sensor profiles the registry knows."""
+"""``sdt sensors``: the sensor profiles and parts the registry knows."""
 
 from __future__ import annotations
 
 import typer
+from rich.markup import escape
 
 from ..specs import SensorSpec
-from .common import print_json, registry, table
+from . import sensor_views as views
+from .common import console, print_json, registry, table
 
-app = typer.Typer(help="List and inspect sensor profiles.", no_args_is_help=True)
+app = typer.Typer(help="List and inspect sensor profiles and parts.", no_args_is_help=True)
+
+_sensor_json = views.sensor_json  # kept for callers of the old name
 
 
-def _sensor_json(spec: SensorSpec) -> dict:
-    return {
-        **spec.content_dict(),
-        "plugin": spec.plugin,
-        "distribution": spec.distribution,
-        "quantisation_step_g": spec.quantisation_step_g,
-        "content_hash": spec.content_hash(),
-    }
+def _fmt(value: object) -> str:
+    if value is None:
+        return "-"
+    return value if isinstance(value, str) else f"{value:g}"
+
+
+def _profile_row(s: SensorSpec) -> list[object]:
+    digital = f"{s.digital_cutoff_hz:g} ({s.digital_order})" if s.digital_cutoff_hz else "-"
+    noise = f"{s.noise_density_ug_rthz:g}" + ("" if s.inject_noise else " (off)")
+    return [
+        s.name,
+        _fmt(s.sampling_rate_hz),
+        _fmt(s.full_scale_g),
+        _fmt(s.adc_bits),
+        noise,
+        _fmt(s.mech_cutoff_hz),
+        _fmt(s.analog_cutoff_hz),
+        digital,
+        s.distribution,
+    ]
 
 
 @app.command("list")
 def list_sensors(
     ctx: typer.Context,
+    max_price: str | None = typer.Option(
+        None, "--max-price", help="Parts priced at most this, e.g. 10EUR (profiles have no price)."
+    ),
+    min_rate: float | None = typer.Option(
+        None, "--min-rate", help="Some mode samples at least this fast, Hz."
+    ),
+    max_noise: float | None = typer.Option(
+        None, "--max-noise", help="Some mode's X-axis noise density at most this, µg/√Hz."
+    ),
+    simulable_at: float | None = typer.Option(
+        None, "--simulable-at", help="Some mode can be simulated from a recording at HZ."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
 ) -> None:
-    """List sensor profiles with their paper Table 1 parameters.
+    """List sensor profiles (paper Table 1) and parts with their mode options.
+
+    A part passes a filter when at least one of its modes does; --json lists
+    those modes under "matching_modes".
 
     Example:
 
-      sdt sensors list --json
+      sdt sensors list --max-price 15EUR --min-rate 3200
 
-      sdt --sensor-file my_sensor.toml sensors list
+      sdt sensors list --simulable-at 20000 --max-noise 100 --json
     """
-    sensors = registry(ctx).sensors()
+    reg = registry(ctx)
+    filters = views.Filters(
+        views.parse_price(max_price) if max_price else None, min_rate, max_noise, simulable_at
+    )
+    parts = reg.parts()
+    views.check_currencies(parts, filters.max_price)
+    profiles = [s for s in reg.sensors() if views.profile_matches(s, filters)]
+    matching = {p.name: views.part_matches(p, filters) if filters.any else [] for p in parts}
+    parts = [p for p in parts if not filters.any or matching[p.name]]
     if as_json:
-        print_json([_sensor_json(s) for s in sensors])
+        out = [views.sensor_json(s) for s in profiles]
+        for part in parts:
+            entry = views.part_json(part)
+            if filters.any:
+                entry["matching_modes"] = matching[part.name]
+            out.append(entry)
+        print_json(out)
         return
-    rows = []
-    for s in sensors:
-        digital = f"{s.digital_cutoff_hz:g} ({s.digital_order})" if s.digital_cutoff_hz else "-"
-        noise = f"{s.noise_density_ug_rthz:g}" + ("" if s.inject_noise else " (off)")
-        rows.append(
-            [
-                s.name,
-                f"{s.sampling_rate_hz:g}",
-                f"{s.full_scale_g:g}",
-                s.adc_bits,
-                noise,
-                f"{s.mech_cutoff_hz:g}",
-                f"{s.analog_cutoff_hz:g}",
-                digital,
-                s.distribution,
-            ]
-        )
     table(
         "Sensor profiles (paper Table 1)",
         [
@@ -67,31 +95,109 @@ def list_sensors(
             "f_dig Hz (order)",
             "distribution",
         ],
-        rows,
+        [_profile_row(s) for s in profiles],
     )
+    if parts or reg.parts():
+        table(
+            escape("Parts: use as name or name[key=option,...] (sdt sensors show NAME)"),
+            [
+                "part",
+                "modes",
+                "rate Hz",
+                "±g",
+                "bits",
+                "NSD µg/√Hz (default mode)",
+                "price",
+                "distribution",
+            ],
+            [[escape(cell) for cell in views.part_row(p)] for p in parts],
+        )
 
 
 @app.command("show")
 def show_sensor(
     ctx: typer.Context,
-    name: str = typer.Argument(..., help="Sensor name, e.g. adxl345."),
+    name: str = typer.Argument(..., help="Sensor or part name, e.g. adxl345 or adxl355[range=8g]."),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
 ) -> None:
-    """Show every field of one sensor profile, with units and meaning.
+    """Show every field of a sensor profile, or a part in a mode with each value's source.
 
     Example:
 
       sdt sensors show adxl345
+
+      sdt sensors show "adxl355[range=8g,odr=1000]"
     """
-    spec = registry(ctx).sensor(name)
-    if as_json:
-        print_json(_sensor_json(spec))
+    from ..parts import resolve, split_name
+
+    reg = registry(ctx)
+    base, modes = split_name(name)
+    if base in {p.name for p in reg.parts()}:
+        resolved = resolve(reg.part(base), modes)
+        if as_json:
+            print_json(
+                {
+                    **views.part_json(resolved.part),
+                    "sensor": views.sensor_json(resolved.sensor),
+                    "mode": resolved.mode,
+                    "provenance": [s.as_dict() for s in resolved.sources],
+                }
+            )
+            return
+        _print_part(resolved)
         return
-    data = _sensor_json(spec)
+    spec = reg.sensor(name)
+    if as_json:
+        print_json(views.sensor_json(spec))
+        return
+    data = views.sensor_json(spec)
     rows = [
         [field, data.get(field), info.description or ""]
         for field, info in SensorSpec.model_fields.items()
     ]
-    rows.append(["quantisation_step_g", f"{spec.quantisation_step_g:.6g}", "2 G_max / 2**B, g"])
+    step = spec.quantisation_step_g
+    rows.append(["quantisation_step_g", _fmt(step and float(f"{step:.6g}")), "2 G_max / 2**B, g"])
     rows.append(["content_hash", spec.content_hash()[:16], "Stable hash of the chain fields"])
-    table(f"Sensor {spec.name}", ["field", "value", "meaning"], rows)
+    table(
+        f"Sensor {spec.name}",
+        ["field", "value", "meaning"],
+        [[escape(str(c)) for c in r] for r in rows],
+    )
+
+
+def _say(text: str) -> None:
+    console.print(text, highlight=False, markup=False)
+
+
+def _print_part(resolved) -> None:
+    part, sensor = resolved.part, resolved.sensor
+    rows, notes = views.provenance_rows(resolved)
+    table(
+        f"{escape(sensor.name)}: {escape(sensor.description)}",
+        ["field", "value", "source", "where", "basis", "set by"],
+        [[escape(str(c)) for c in row] for row in rows],
+    )
+    for note in notes:
+        _say(note)
+    table(
+        escape(f"Modes of {part.name}: {part.name}[key=option,...]"),
+        ["key", "options", "default", "why the default"],
+        [
+            [escape(str(c)) for c in (key, ", ".join(mode.options), mode.default, mode.default_why)]
+            for key, mode in sorted(part.modes.items())
+        ],
+    )
+    if part.price:
+        p = part.price
+        _say(
+            f"Indicative price: {p.amount:g} {p.currency} ({p.quantity}; {p.source}, {p.date})"
+            + (f"; {p.note}" if p.note else "")
+        )
+    else:
+        _say("Indicative price: not found.")
+    _say("Sources:")
+    for doc_id, doc in part.documents.items():
+        kind = " (secondary source)" if doc.secondary else ""
+        _say(f"  {doc_id}: {doc.title}, {doc.revision}{kind} {doc.url}".rstrip())
+    for note in part.notes:
+        _say(f"Note: {note}")

@@ -51,14 +51,21 @@ class ResultsFolder:
 
     @property
     def reference(self) -> str:
-        """The reference sensor (config ``reference``, default wilcoxon-786b10)."""
-        return self.config.reference if self.config is not None else "wilcoxon-786b10"
+        """The reference sensor: config ``reference``, else the one the benchmark picked."""
+        if self.config is not None and self.config.reference:
+            return self.config.reference
+        if self.summary and self.summary.get("reference"):
+            return str(self.summary["reference"])
+        present = set(self.results["sensor"].dropna())
+        return "native-reference" if "native-reference" in present else "wilcoxon-786b10"
 
     @property
     def sensors(self) -> list[str]:
         """Sensor names in configuration order, then any others found in the results."""
+        present = list(self.results["sensor"].dropna().unique())
         listed = list(self.config.sensors or []) if self.config is not None else []
-        found = [s for s in self.results["sensor"].dropna().unique() if s not in listed]
+        listed = [s for s in listed if s in present]  # a part's name becomes its canonical form
+        found = [s for s in present if s not in listed]
         ordered = listed + sorted(found)
         if self.reference in ordered:  # the reference first, like the paper's tables
             ordered.remove(self.reference)

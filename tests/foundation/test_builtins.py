@@ -18,9 +18,12 @@ DECLARED = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["entr
 
 
 def plugin_modules() -> list[str]:
-    """Every module under plugins/ that implements a hook."""
+    """Every module under plugins/ that implements a hook (other distributions excluded)."""
     found = []
+    own = [p.parent for p in (ROOT / "plugins").rglob("pyproject.toml")]  # e.g. sensors-catalog
     for path in sorted((ROOT / "plugins").rglob("*.py")):
+        if any(folder in path.parents for folder in own):
+            continue
         if "def register_" in path.read_text():
             parts = path.relative_to(ROOT / "plugins").with_suffix("").parts
             found.append(".".join(("sdt_plugins", *parts)))

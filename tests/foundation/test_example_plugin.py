@@ -58,20 +58,22 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 def test_installed_example_appears_in_sensors_and_plugins(installed):
     sensors = {s["name"]: s for s in sdt_json("sensors", "list", pythonpath=str(installed))}
-    assert sensors["adxl355"]["distribution"] == "sdt-adxl355"
-    assert sensors["adxl355"]["full_scale_g"] == 8
+    assert sensors["adxl355-example"]["distribution"] == "sdt-adxl355"
+    assert sensors["adxl355-example"]["full_scale_g"] == 8
     plugins = {p["name"]: p for p in sdt_json("plugins", "list", pythonpath=str(installed))}
-    assert plugins["adxl355"]["distribution"] == "sdt-adxl355"
-    assert plugins["adxl355"]["version"] == "0.1.0"
-    assert plugins["adxl355"]["status"] == "loaded"
+    assert plugins["adxl355-example"]["distribution"] == "sdt-adxl355"
+    assert plugins["adxl355-example"]["version"] == "0.1.0"
+    assert plugins["adxl355-example"]["status"] == "loaded"
+    # beside the catalogue's part of the same chip: different names, no conflict
+    assert plugins["sensors-catalog"]["status"] == "loaded"
 
 
 def test_uninstalled_example_is_gone():
     names = {s["name"] for s in sdt_json("sensors", "list", pythonpath=None)}
-    assert "adxl355" not in names
+    assert "adxl355-example" not in names
     # Importable source alone is not enough: discovery goes only through entry points.
     names = {s["name"] for s in sdt_json("sensors", "list", pythonpath=str(EXAMPLE))}
-    assert "adxl355" not in names
+    assert "adxl355-example" not in names
 
 
 def test_example_passes_the_conformance_checks(monkeypatch):
@@ -79,4 +81,4 @@ def test_example_passes_the_conformance_checks(monkeypatch):
     import sdt_adxl355
 
     [spec] = check_plugin(sdt_adxl355)
-    assert spec.name == "adxl355" and spec.adc_bits == 20
+    assert spec.name == "adxl355-example" and spec.adc_bits == 20

@@ -1,0 +1,1 @@
+"""One TOML file per part (package data); see docs/sensors.md for the format."""

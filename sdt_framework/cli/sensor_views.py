@@ -1,0 +1,201 @@
+"""What ``sdt sensors list`` and ``show`` print about parts: summaries, filters, provenance.
+
+Pure functions from specs to JSON-ready dicts and table rows, so the filters
+are tested without a terminal. A part qualifies for a filter when at least one
+of its modes does (``--min-rate 6400``: some mode samples at 6400 Hz or
+faster); noise is read on the X axis, the benchmark's default.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from ..chain.simulable import simulation_problem
+from ..errors import SDTError
+from ..parts import PartSpec, all_modes, resolve
+from ..specs import SensorSpec
+
+__all__ = ["Filters", "parse_price", "part_json", "part_row", "profile_matches", "sensor_json"]
+
+
+@dataclass(frozen=True)
+class Filters:
+    """The list filters; None means not given."""
+
+    max_price: tuple[float, str | None] | None = None
+    min_rate: float | None = None
+    max_noise: float | None = None
+    simulable_at: float | None = None
+
+    @property
+    def any(self) -> bool:
+        """True if any filter is set."""
+        return any(v is not None for v in self.__dict__.values())
+
+
+def parse_price(text: str) -> tuple[float, str | None]:
+    """``"10"`` -> (10.0, None); ``"10EUR"`` or ``"10 eur"`` -> (10.0, "EUR")."""
+    match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?)\s*([A-Za-z]{3})?\s*", text)
+    if match is None:
+        raise SDTError(f"--max-price {text!r}: give an amount, optionally with a currency: 10EUR")
+    return float(match[1]), match[2].upper() if match[2] else None
+
+
+def sensor_json(spec: SensorSpec) -> dict[str, Any]:
+    """A sensor profile as JSON: every field, provenance, derived step and hash."""
+    return {
+        **spec.content_dict(),
+        "kind": "sensor",
+        "plugin": spec.plugin,
+        "distribution": spec.distribution,
+        "quantisation_step_g": spec.quantisation_step_g,
+        "content_hash": spec.content_hash(),
+    }
+
+
+def _fmt(value: float) -> str:
+    return f"{value:g}"
+
+
+def _span(values: list[float], unit: str = "") -> str:
+    low, high = min(values), max(values)
+    return f"{_fmt(low)}{unit}" if low == high else f"{_fmt(low)}–{_fmt(high)}{unit}"
+
+
+def _summary(part: PartSpec) -> dict[str, Any]:
+    sensors = [resolve(part, mode).sensor for mode in all_modes(part)]
+    return {
+        "rates_hz": sorted({float(s.sampling_rate_hz) for s in sensors}),
+        "full_scale_g": sorted({float(s.full_scale_g or 0) for s in sensors}),
+        "adc_bits": sorted({int(s.adc_bits or 0) for s in sensors}),
+        "noise_x_ug_rthz": sorted({s.noise_density_ug_rthz for s in sensors}),
+        "sensors": sensors,
+    }
+
+
+def part_json(part: PartSpec) -> dict[str, Any]:
+    """A part as JSON: modes, ranges over its modes, the default mode's sensor, price, sources."""
+    summary = _summary(part)
+    default = resolve(part)
+    return {
+        "name": part.name,
+        "kind": "part",
+        "manufacturer": part.manufacturer,
+        "description": part.description,
+        "interface": part.interface,
+        "modes": {
+            key: {"options": list(mode.options), "default": mode.default, "why": mode.default_why}
+            for key, mode in sorted(part.modes.items())
+        },
+        "default_sensor": default.sensor.name,
+        **{k: v for k, v in summary.items() if k != "sensors"},
+        "noise_density_ug_rthz": default.sensor.noise_density_ug_rthz,
+        "per_axis": default.sensor.per_axis,
+        "price": part.price.model_dump() if part.price else None,
+        "documents": {k: d.model_dump() for k, d in part.documents.items()},
+        "notes": list(part.notes),
+        "plugin": part.plugin,
+        "distribution": part.distribution,
+        "content_hash": part.content_hash(),
+    }
+
+
+def _price_ok(price: Any, limit: tuple[float, str | None]) -> bool:
+    amount, currency = limit
+    if price is None:
+        return False
+    return (currency is None or price.currency == currency) and price.amount <= amount
+
+
+def check_currencies(parts: list[PartSpec], limit: tuple[float, str | None] | None) -> None:
+    """A --max-price without currency is only meaningful if all prices share one."""
+    if limit is None or limit[1] is not None:
+        return
+    found = sorted({p.price.currency for p in parts if p.price})
+    if len(found) > 1:
+        raise SDTError(
+            f"--max-price {limit[0]:g}: prices are in {', '.join(found)}; add the currency, "
+            f"e.g. --max-price {limit[0]:g}{found[0]}"
+        )
+
+
+def _sensor_ok(sensor: SensorSpec, filters: Filters) -> bool:
+    rate = sensor.sampling_rate_hz
+    if filters.min_rate is not None and rate != "native" and float(rate) < filters.min_rate:
+        return False
+    if filters.max_noise is not None and sensor.noise_density_ug_rthz > filters.max_noise:
+        return False
+    return filters.simulable_at is None or simulation_problem(sensor, filters.simulable_at) is None
+
+
+def profile_matches(spec: SensorSpec, filters: Filters) -> bool:
+    """Whether a sensor profile passes the filters (profiles have no price)."""
+    return filters.max_price is None and _sensor_ok(spec, filters)
+
+
+def part_matches(part: PartSpec, filters: Filters) -> list[str]:
+    """Canonical names of the part's modes that pass every filter (empty: the part is out)."""
+    if filters.max_price is not None and not _price_ok(part.price, filters.max_price):
+        return []
+    return [s.name for s in _summary(part)["sensors"] if _sensor_ok(s, filters)]
+
+
+def _modes_text(part: PartSpec) -> str:
+    lines = []
+    for key, mode in sorted(part.modes.items()):
+        labels = list(mode.options)
+        if mode.field and len(labels) > 4:
+            values = [mode.label_value(label) for label in labels]
+            text = f"{_span(values, mode.unit)} ({len(labels)})"
+        else:
+            text = ",".join(labels)
+        lines.append(f"{key}: {text}; default {mode.default}")
+    return "\n".join(lines) or "-"
+
+
+def part_row(part: PartSpec) -> list[str]:
+    """One row of the parts table."""
+    summary = _summary(part)
+    sensor = resolve(part).sensor
+    noise = _fmt(sensor.noise_density_ug_rthz)
+    if sensor.per_axis:
+        noise = "/".join(_fmt(sensor.per_axis[a]["noise_density_ug_rthz"]) for a in "xyz")
+        noise += " (x/y/z)"
+    price = f"{part.price.amount:g} {part.price.currency}" if part.price else "-"
+    return [
+        part.name,
+        _modes_text(part),
+        _span(summary["rates_hz"]),
+        _span(summary["full_scale_g"]),
+        _span([float(b) for b in summary["adc_bits"]]),
+        f"{noise}\n({_span(summary['noise_x_ug_rthz'])} over modes)"
+        if len(summary["noise_x_ug_rthz"]) > 1
+        else noise,
+        price,
+        part.distribution or "",
+    ]
+
+
+def provenance_rows(resolved: Any) -> tuple[list[list[str]], list[str]]:
+    """Rows per chain value (value, document id, where, basis, set by) and the stand-in notes."""
+    rows, notes = [], []
+    for src in resolved.sources:
+        value = src.value
+        if isinstance(value, dict):
+            text = "/".join(_fmt(value[a]) for a in "xyz") + " (x/y/z)"
+        else:
+            text = "none" if value is None else _fmt(value)
+        if src.odr_fraction is not None:
+            text += f" (ODR × {src.odr_fraction:g})"
+        if src.absent:
+            text += " *"
+            notes.append(
+                f"* {src.field}: not in the documents ({src.absent}); stand-in "
+                f"{'from ' + src.doc if src.doc else 'none'}: {src.why}"
+            )
+        elif src.note:
+            notes.append(f"{src.field}: {src.note}")
+        rows.append([src.field, text, src.doc or src.source, src.where, src.basis, src.set_by])
+    return rows, notes

@@ -1,0 +1,34 @@
+"""Real parts with operating modes and datasheet provenance (see ``docs/sensors.md``).
+
+A plugin registers a :class:`PartSpec` through the ``register_parts`` hook;
+``registry.sensor("adxl355[range=8g]")`` resolves a part in a mode to a
+:class:`~sdt_framework.specs.SensorSpec` named in canonical form.
+"""
+
+from __future__ import annotations
+
+from .files import load_part_file, load_part_text
+from .model import CHAIN_VALUES, AxisValues, Document, Entry, Mode, PartSpec, Price
+from .names import canonical_name, split_name, split_names
+from .resolve import FieldSource, ModeError, Resolved, all_modes, resolve, select_mode
+
+__all__ = [
+    "CHAIN_VALUES",
+    "AxisValues",
+    "Document",
+    "Entry",
+    "FieldSource",
+    "Mode",
+    "ModeError",
+    "PartSpec",
+    "Price",
+    "Resolved",
+    "all_modes",
+    "canonical_name",
+    "load_part_file",
+    "load_part_text",
+    "resolve",
+    "select_mode",
+    "split_name",
+    "split_names",
+]
