@@ -218,7 +218,9 @@ class Mode(_Model):
         try:
             return float(text)
         except ValueError:
-            raise ValueError(f"option {label!r} is not a number in {self.unit or 'the field unit'}")
+            raise ValueError(
+                f"option {label!r} is not a number in {self.unit or 'the field unit'}"
+            ) from None
 
     def entries(self, label: str) -> dict[str, Entry]:
         """The values option ``label`` sets, the label's own value included."""

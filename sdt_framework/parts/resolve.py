@@ -11,7 +11,7 @@ with one :class:`FieldSource` per value saying where it came from.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from itertools import product
 
 from pydantic import ValidationError
@@ -25,6 +25,7 @@ __all__ = ["FieldSource", "ModeError", "Resolved", "all_modes", "resolve", "sele
 
 #: the chain model's filter orders (SPEC section 2) when a part does not give its own
 MODEL_ORDERS = {"mech_order": 2, "analog_order": 1}
+NOT_DOCUMENTS = ("", "chain model")
 INTEGERS = ("adc_bits", "digital_order", "mech_order", "analog_order")
 
 
@@ -176,7 +177,12 @@ def resolve(part: PartSpec, given: Mapping[str, str] | None = None) -> Resolved:
         entry, set_by = entries[field]
         numbers[field], fs = _evaluate(part, field, entry, set_by, mode, odr)
         sources.append(fs)
-    cited = "; ".join(dict.fromkeys(s.source for s in sources if s.source != "chain model"))
+    if numbers["digital_cutoff_hz"] is None:  # no digital stage: its order follows the cutoff
+        numbers["digital_order"] = None
+        cutoff = next(s for s in sources if s.field == "digital_cutoff_hz")
+        at = next(i for i, s in enumerate(sources) if s.field == "digital_order")
+        sources[at] = replace(cutoff, field="digital_order", note="no digital stage in this mode")
+    cited = "; ".join(dict.fromkeys(s.source for s in sources if s.source not in NOT_DOCUMENTS))
     return Resolved(part, mode, _sensor(part, mode, numbers, cited), tuple(sources))
 
 
