@@ -159,10 +159,8 @@ def part_row(part: PartSpec) -> list[str]:
     """One row of the parts table."""
     summary = _summary(part)
     sensor = resolve(part).sensor
-    noise = _fmt(sensor.noise_density_ug_rthz)
-    if sensor.per_axis:
-        noise = "/".join(_fmt(sensor.per_axis[a]["noise_density_ug_rthz"]) for a in "xyz")
-        noise += " (x/y/z)"
+    axes = [sensor.for_axis(a).noise_density_ug_rthz for a in "xyz"]
+    noise = _fmt(axes[0]) if len(set(axes)) == 1 else "/".join(map(_fmt, axes)) + " (x/y/z)"
     price = f"{part.price.amount:g} {part.price.currency}" if part.price else "-"
     return [
         part.name,

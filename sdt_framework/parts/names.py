@@ -32,6 +32,8 @@ def split_name(text: str) -> tuple[str, dict[str, str]]:
     base = match["base"].strip()
     modes: dict[str, str] = {}
     if match["modes"] is not None:
+        if not match["modes"].strip():
+            raise SDTError(f"{text!r}: empty brackets; give key=option or leave them out")
         for item in match["modes"].split(","):
             key, sep, option = (part.strip().lower() for part in item.partition("="))
             if not sep or not key or not option:
@@ -39,8 +41,6 @@ def split_name(text: str) -> tuple[str, dict[str, str]]:
             if key in modes:
                 raise SDTError(f"{text!r}: mode key {key!r} is given twice")
             modes[key] = option
-        if not modes:
-            raise SDTError(f"{text!r}: empty brackets; give key=option or leave them out")
     return base, modes
 
 
