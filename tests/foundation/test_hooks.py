@@ -88,3 +88,41 @@ def test_every_hook_is_documented_and_tested():
     for name in names:
         assert inspect.getdoc(getattr(hookspecs, name)), f"hook {name} has no docstring"
         assert f"def test_hook_{name}(" in source, f"hook {name} has no test_hook_{name}"
+
+
+def test_hook_register_parts():
+    from sdt_framework.parts import load_part_text
+
+    part = load_part_text(
+        """
+        name = "tiny-part"
+        manufacturer = "Test"
+        interface = "digital"
+        [documents.ds]
+        title = "Tiny data sheet"
+        revision = "Rev. 1"
+        [values]
+        sampling_rate_hz = { value = 100, doc = "ds", where = "T1", basis = "setting" }
+        adc_bits = { value = 8, doc = "ds", where = "T1", basis = "nominal" }
+        noise_density_ug_rthz = { value = 1, doc = "ds", where = "T1", basis = "typical" }
+        mech_cutoff_hz = { value = 40, doc = "ds", where = "T1", basis = "typical" }
+        analog_cutoff_hz = { value = 30, doc = "ds", where = "T1", basis = "typical" }
+        digital_cutoff_hz = { value = "none", doc = "ds", where = "T1", basis = "derived" }
+        digital_order = { value = "none", doc = "ds", where = "T1", basis = "derived" }
+        [modes.range]
+        default = "2g"
+        default_why = "power-on"
+        field = "full_scale_g"
+        unit = "g"
+        doc = "ds"
+        where = "T2"
+        basis = "nominal"
+        options = ["2g", "4g"]
+        """,
+        "tiny.toml",
+    )
+    registry = build_registry(entry_points=False, plugins=[plugin_with("register_parts", part)])
+    assert registry.part("tiny-part").plugin == "p_register_parts"
+    sensor = registry.sensor("tiny-part[range=4g]")
+    assert (sensor.name, sensor.full_scale_g) == ("tiny-part[range=4g]", 4)
+    assert sensor.distribution == "(in-process)"

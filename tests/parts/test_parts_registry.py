@@ -1,0 +1,79 @@
+"""Parts in the registry: resolution by name, one namespace with sensors, conformance."""
+
+from __future__ import annotations
+
+import types
+
+import pytest
+
+from sdt_framework import SensorSpec, build_registry, hookimpl
+from sdt_framework.conformance import check_plugin
+from sdt_framework.errors import DuplicateNameError, SDTError, UnknownNameError
+
+
+def plugin(hook: str, *specs) -> types.ModuleType:
+    module = types.ModuleType(f"plugin_{hook}")
+
+    def impl(register):
+        for spec in specs:
+            register(spec)
+
+    setattr(module, hook, hookimpl(impl))
+    return module
+
+
+def sensor(name: str) -> SensorSpec:
+    return SensorSpec(
+        name=name,
+        sampling_rate_hz=100,
+        full_scale_g=2,
+        adc_bits=8,
+        noise_density_ug_rthz=1,
+        mech_cutoff_hz=40,
+        analog_cutoff_hz=30,
+    )
+
+
+def test_a_part_resolves_by_name_with_or_without_a_mode(toy):
+    registry = build_registry(entry_points=False, plugins=[plugin("register_parts", toy)])
+    assert registry.sensor("toy").name == "toy[odr=4000,range=2g]"
+    assert registry.sensor("toy[range=8g]").full_scale_g == 8
+    assert registry.sensor("toy[odr=4000,range=8g]") == registry.sensor("toy[range=8g]")
+    assert registry.sensors() == []  # parts are listed by parts(), not as profiles
+    assert [p.name for p in registry.parts()] == ["toy"]
+
+
+def test_unknown_names_list_sensors_and_parts(toy):
+    registry = build_registry(
+        entry_points=False,
+        plugins=[plugin("register_parts", toy), plugin("register_sensors", sensor("plain"))],
+    )
+    with pytest.raises(UnknownNameError, match=r"unknown sensor 'tyo'.*Did you mean 'toy'"):
+        registry.sensor("tyo")
+    with pytest.raises(UnknownNameError, match="unknown part 'plain'"):
+        registry.sensor("plain[range=2g]")  # a profile has no modes
+    with pytest.raises(SDTError, match="range=3g is not an option"):
+        registry.sensor("toy[range=3g]")
+
+
+def test_a_part_and_a_sensor_may_not_share_a_name(toy):
+    registry = build_registry(
+        entry_points=False,
+        plugins=[plugin("register_sensors", sensor("toy")), plugin("register_parts", toy)],
+    )
+    assert registry.plugins()[-1].status == "conflict"
+    with pytest.raises(DuplicateNameError, match="part 'toy' is registered twice"):
+        registry.check()
+
+
+def test_brackets_are_reserved_for_modes():
+    registry = build_registry(
+        entry_points=False, plugins=[plugin("register_sensors", sensor("x[range=2g]"))]
+    )
+    assert "brackets are reserved for part modes" in registry.plugins()[-1].error
+
+
+def test_the_catalogue_passes_the_conformance_checks():
+    catalogue = pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog")
+    specs = check_plugin(catalogue)
+    assert len(specs) >= 12
