@@ -60,7 +60,7 @@ def screen_sensors(
         for (rate, axis), rec in sorted(examples.items(), key=lambda item: item[0]):
             problem = simulation_problem(sensor.for_axis(axis), rate)
             if problem is not None:
-                on_axis = f" (axis {axis})" if sensor.per_axis else ""
+                on_axis = f" (axis {axis})" if axis != "x" else ""
                 skipped[sensor.name] = f"{problem}{on_axis} (e.g. {rec.source})"
                 break
         else:

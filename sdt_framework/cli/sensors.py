@@ -82,22 +82,16 @@ def list_sensors(
             out.append(entry)
         print_json(out)
         return
-    table(
-        "Sensor profiles (paper Table 1)",
-        [
-            "name",
-            "rate Hz",
-            "±g",
-            "bits",
-            "NSD µg/√Hz",
-            "f_mech Hz",
-            "f_ana Hz",
-            "f_dig Hz (order)",
-            "distribution",
-        ],
-        [_profile_row(s) for s in profiles],
-    )
-    if parts or reg.parts():
+    if profiles:
+        table(
+            "Sensor profiles (paper Table 1)",
+            ["name", "rate Hz", "±g", "bits", "NSD µg/√Hz", "f_mech Hz", "f_ana Hz",
+             "f_dig Hz (order)", "distribution"],
+            [_profile_row(s) for s in profiles],
+        )  # fmt: skip
+    if not profiles and not parts:
+        console.print("No sensor profile or part matches these filters.")
+    if parts:
         table(
             escape("Parts: use as name or name[key=option,...] (sdt sensors show NAME)"),
             [
