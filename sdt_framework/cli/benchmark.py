@@ -7,7 +7,6 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.markup import escape
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 from rich.table import Table
 
@@ -55,7 +54,7 @@ def _print_table4(results: Any, sensor_order: list[str]) -> None:
                     )
                 out.add_row(
                     scenario if i == 0 else "",
-                    escape(sensor),
+                    sensor,
                     *cells,
                     end_section=i == len(sensors) - 1,
                 )
@@ -150,7 +149,7 @@ def benchmark(
     plan = plan_benchmark(config, registry(ctx))
     out_dir = out or Path("results") / dt.datetime.now().strftime("%Y%m%d-%H%M%S")
     for name, reason in plan.skipped_sensors.items():
-        err_console.print(f"[yellow]skipped[/] sensor {escape(name)}: {escape(reason)}")
+        err_console.print(f"skipped sensor {name}: {reason}")
     for (machine, scenario), reason in sorted(plan.skipped.items()):
         err_console.print(f"skipped {machine} / {scenario}: {reason}", highlight=False)
     console.print(

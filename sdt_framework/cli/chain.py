@@ -58,6 +58,7 @@ def degrade_command(
         f"{rows} x {y.shape[-1]} at {fs_out:g} Hz with {spec.name} "
         f"(seed {seed}, noise {noise_state}) -> {out}",
         highlight=False,
+        markup=False,  # a part's mode is in brackets
         soft_wrap=True,
     )
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import typer
-from rich.markup import escape
 
 from ..specs import SensorSpec
 from . import sensor_views as views
@@ -93,7 +92,7 @@ def list_sensors(
         console.print("No sensor profile or part matches these filters.")
     if parts:
         table(
-            escape("Parts: use as name or name[key=option,...] (sdt sensors show NAME)"),
+            "Parts: use as name or name[key=option,...] (sdt sensors show NAME)",
             [
                 "part",
                 "modes",
@@ -104,7 +103,7 @@ def list_sensors(
                 "price",
                 "distribution",
             ],
-            [[escape(cell) for cell in views.part_row(p)] for p in parts],
+            [[cell for cell in views.part_row(p)] for p in parts],
         )
 
 
@@ -155,7 +154,7 @@ def show_sensor(
     table(
         f"Sensor {spec.name}",
         ["field", "value", "meaning"],
-        [[escape(str(c)) for c in r] for r in rows],
+        [[str(c) for c in r] for r in rows],
     )
 
 
@@ -167,17 +166,17 @@ def _print_part(resolved) -> None:
     part, sensor = resolved.part, resolved.sensor
     rows, notes = views.provenance_rows(resolved)
     table(
-        f"{escape(sensor.name)}: {escape(sensor.description)}",
+        f"{sensor.name}: {sensor.description}",
         ["field", "value", "source", "where", "basis", "set by"],
-        [[escape(str(c)) for c in row] for row in rows],
+        [[str(c) for c in row] for row in rows],
     )
     for note in notes:
         _say(note)
     table(
-        escape(f"Modes of {part.name}: {part.name}[key=option,...]"),
+        f"Modes of {part.name}: {part.name}[key=option,...]",
         ["key", "options", "default", "why the default"],
         [
-            [escape(str(c)) for c in (key, ", ".join(mode.options), mode.default, mode.default_why)]
+            [str(c) for c in (key, ", ".join(mode.options), mode.default, mode.default_why)]
             for key, mode in sorted(part.modes.items())
         ],
     )
