@@ -69,7 +69,7 @@ def benchmark(
     sensors: str | None = typer.Option(
         None,
         "--sensors",
-        help="Comma-separated sensor names; a part with a mode as adxl355[range=8g,odr=4000] "
+        help="Comma-separated sensor names; a part with a mode as adxl355\\[range=8g,odr=4000] "
         "(default: the reference, adxl345, adxl357).",
     ),
     classifiers: str | None = typer.Option(None, "--classifiers", help="Comma-separated."),
@@ -113,7 +113,7 @@ def benchmark(
 
       sdt benchmark --sensors adxl345,adxl357 --classifiers lr,rf --repeats 5
 
-      sdt benchmark --quick --sensors "adxl355[range=8g],iis3dwb,mpu6050"
+      sdt benchmark --quick --sensors "adxl355\\[range=8g],iis3dwb,mpu6050"
 
       sdt benchmark --data /data/NLN-EMP --out results/nln --jobs 2
     """

@@ -10,8 +10,6 @@ from .common import console, print_json, registry, table
 
 app = typer.Typer(help="List and inspect sensor profiles and parts.", no_args_is_help=True)
 
-_sensor_json = views.sensor_json  # kept for callers of the old name
-
 
 def _fmt(value: object) -> str:
     if value is None:
@@ -110,7 +108,9 @@ def list_sensors(
 @app.command("show")
 def show_sensor(
     ctx: typer.Context,
-    name: str = typer.Argument(..., help="Sensor or part name, e.g. adxl345 or adxl355[range=8g]."),
+    name: str = typer.Argument(
+        ..., help="Sensor or part name, e.g. adxl345 or adxl355\\[range=8g]."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
 ) -> None:
     """Show every field of a sensor profile, or a part in a mode with each value's source.
@@ -119,7 +119,7 @@ def show_sensor(
 
       sdt sensors show adxl345
 
-      sdt sensors show "adxl355[range=8g,odr=1000]"
+      sdt sensors show "adxl355\\[range=8g,odr=1000]"
     """
     from ..parts import resolve, split_name
 
