@@ -86,13 +86,19 @@ def plan_explore(
     data = {**protocol, **{k: v for k, v in overrides.items() if k != "quick"}}
     if overrides.get("quick"):
         data = quick_preset(data)
-    reference = data.get("reference", BenchmarkConfig.model_fields["reference"].default)
-    names = list(dict.fromkeys([reference, base.name, *(p.spec.name for p in points)]))
+    names = [base.name, *(p.spec.name for p in points)]
+    plan = plan_benchmark(_config(data, names, where), registry)
+    if plan.reference not in names:  # the reference follows the data: known once planned
+        names = [plan.reference, *names]
+        plan = plan_benchmark(_config(data, names, where), registry)
+    return ExplorePlan(sweep, base, design, points, skipped, plan)
+
+
+def _config(data: dict[str, Any], sensors: list[str], where: str) -> BenchmarkConfig:
     try:
-        config = BenchmarkConfig.model_validate({**data, "sensors": names})
+        return BenchmarkConfig.model_validate({**data, "sensors": sensors})
     except ValidationError as exc:
         raise config_error(exc, where) from None
-    return ExplorePlan(sweep, base, design, points, skipped, plan_benchmark(config, registry))
 
 
 def explore_table(explore: ExplorePlan, results: pd.DataFrame) -> pd.DataFrame:
@@ -103,7 +109,7 @@ def explore_table(explore: ExplorePlan, results: pd.DataFrame) -> pd.DataFrame:
     its own values of the swept parameters, the reference none.
     """
     fields = list(explore.sweep.axes)
-    ref = explore.plan.config.reference
+    ref = explore.plan.reference
     rows = []
     for point in explore.points:
         rows.append(
