@@ -20,7 +20,7 @@ from sklearn.preprocessing import StandardScaler
 
 from ..specs import ClassifierSpec
 
-__all__ = ["RunResult", "RunTask", "fit_predict", "run_classifier"]
+__all__ = ["RunResult", "RunTask", "fit_predict", "recording_counts", "run_classifier"]
 
 
 @dataclass(frozen=True)
@@ -36,6 +36,7 @@ class RunTask:
     y_train: np.ndarray  # integer codes into ``classes``
     x_test: np.ndarray
     y_test: np.ndarray
+    test_recordings: np.ndarray | None = None  # recording_id of each test window
 
 
 @dataclass
@@ -53,6 +54,8 @@ class RunResult:
     per_class: list[dict[str, Any]] = field(default_factory=list)
     confusion: list[list[int]] = field(default_factory=list)
     classes: list[str] = field(default_factory=list)
+    # [recording_id, true class, predicted class, count] for each non-zero pair
+    per_recording: list[list[Any]] = field(default_factory=list)
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready form (stored per run for resuming)."""
@@ -68,6 +71,7 @@ class RunResult:
             "per_class": self.per_class,
             "confusion": self.confusion,
             "classes": self.classes,
+            "per_recording": self.per_recording,
         }
 
 
@@ -82,6 +86,27 @@ def fit_predict(
         warnings.simplefilter("ignore", ConvergenceWarning)
         estimator.fit(scaler.transform(x_train), y_train)
     return np.asarray(estimator.predict(scaler.transform(x_test))).astype(int), scaler
+
+
+def recording_counts(
+    recordings: np.ndarray, y_true: np.ndarray, y_pred: np.ndarray, classes: tuple[str, ...]
+) -> list[list[Any]]:
+    """Confusion counts per test recording: ``[recording_id, true, predicted, count]`` rows.
+
+    Only non-zero pairs are listed; summed over recordings they give the run's
+    confusion matrix. They let ``sdt compare`` resample the test set by
+    recording, which a single Macro F1 per run cannot.
+    """
+    names, group = np.unique(np.asarray(recordings, dtype=str), return_inverse=True)
+    n = len(classes)
+    flat = (group * n + y_true) * n + y_pred
+    codes, counts = np.unique(flat, return_counts=True)
+    rec, rest = np.divmod(codes, n * n)
+    true, pred = np.divmod(rest, n)
+    return [
+        [str(names[r]), classes[t], classes[p], int(c)]
+        for r, t, p, c in zip(rec, true, pred, counts, strict=True)
+    ]
 
 
 def run_classifier(task: RunTask) -> RunResult:
@@ -120,6 +145,11 @@ def run_classifier(task: RunTask) -> RunResult:
         for name, p, r, f, s in zip(task.classes, precision, recall, f1, support, strict=True)
     ]
     matrix = confusion_matrix(task.y_test, predicted, labels=codes)
+    by_recording = (
+        recording_counts(task.test_recordings, task.y_test, predicted, task.classes)
+        if task.test_recordings is not None
+        else []
+    )
     return RunResult(
         task.key,
         task.labels,
@@ -131,4 +161,5 @@ def run_classifier(task: RunTask) -> RunResult:
         per_class=per_class,
         confusion=matrix.tolist(),
         classes=list(task.classes),
+        per_recording=by_recording,
     )

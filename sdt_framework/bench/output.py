@@ -3,6 +3,7 @@
 results.parquet / results.csv   one row per run (tidy)
 per_class.parquet               precision, recall, F1, support per class per run
 confusion.parquet               confusion-matrix counts per run (long form)
+per_recording.parquet           confusion counts per run and test recording (for sdt compare)
 allocation.csv                  the train/test allocation used
 skipped.csv                     (machine, scenario) pairs that could not be scored and
                                 sensors the data cannot simulate ("all" in the other
@@ -24,7 +25,7 @@ import pandas as pd
 
 from ..io import atomic_write_text
 from .config import write_config
-from .results import table4_markdown, tidy, write_frame
+from .results import per_recording, table4_markdown, tidy, write_frame
 from .runner import BenchmarkResult
 
 __all__ = ["OUTPUT_FILES", "software_versions", "write_outputs"]
@@ -34,6 +35,7 @@ OUTPUT_FILES = (
     "results.csv",
     "per_class.parquet",
     "confusion.parquet",
+    "per_recording.parquet",
     "allocation.csv",
     "skipped.csv",
     "features.parquet",
@@ -78,6 +80,7 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
     write_frame(results, out / "results.csv")
     write_frame(per_class, out / "per_class.parquet")
     write_frame(confusion, out / "confusion.parquet")
+    write_frame(per_recording(result.runs), out / "per_recording.parquet")
     write_frame(plan.allocation, out / "allocation.csv")
     skipped = pd.DataFrame(
         [(m, s, "all", reason) for (m, s), reason in sorted(plan.skipped.items())]

@@ -2,9 +2,10 @@
 
 ``results`` has one row per run (dataset, machine, scenario, sensor,
 feature_set, classifier, repeat, seed, macro_f1, n_train, n_test, fit_seconds,
-status, error); ``per_class`` and ``confusion`` are long tables keyed by the
-same run columns. ``table4`` is mean +/- SD (sample SD, ddof=1) of Macro F1
-with scenario blocks, sensor rows and machine x classifier columns.
+status, error); ``per_class``, ``confusion`` and ``per_recording`` (confusion
+counts per test recording) are long tables keyed by the same run columns.
+``table4`` is mean +/- SD (sample SD, ddof=1) of Macro F1 with scenario
+blocks, sensor rows and machine x classifier columns.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from .classify import RunResult
 __all__ = [
     "RUN_COLUMNS",
     "SCENARIO_TITLES",
+    "per_recording",
     "table4",
     "table4_blocks",
     "table4_markdown",
@@ -79,6 +81,20 @@ def tidy(runs: Iterable[RunResult]) -> tuple[pd.DataFrame, pd.DataFrame, pd.Data
         ),
         pd.DataFrame(confusion, columns=[*RUN_COLUMNS, "true", "predicted", "count"]),
     )
+
+
+_RECORDING_FIELDS = ("recording_id", "true", "predicted", "count")
+
+
+def per_recording(runs: Iterable[RunResult]) -> pd.DataFrame:
+    """Confusion counts per (run, test recording): run columns, recording_id, true,
+    predicted, count (non-zero pairs only; empty for runs stored before it existed)."""
+    rows = [
+        [*(run.labels[c] for c in RUN_COLUMNS), *entry]
+        for run in runs
+        for entry in run.per_recording
+    ]
+    return pd.DataFrame(rows, columns=[*RUN_COLUMNS, *_RECORDING_FIELDS])
 
 
 def table4(results: pd.DataFrame) -> pd.DataFrame:

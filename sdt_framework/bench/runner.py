@@ -147,6 +147,7 @@ def _tasks(plan: Plan, features: pd.DataFrame, done: set[str]):
                         y[is_train],
                         x[~is_train],
                         y[~is_train],
+                        sub["recording_id"].to_numpy()[~is_train],
                     )
                     if key not in done
                     else None,

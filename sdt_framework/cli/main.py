@@ -13,6 +13,7 @@ from .budget import budget
 from .chain import register as register_chain_commands
 from .explore import explore
 from .failures import InterruptibleGroup, run
+from .compare import compare
 from .report import report
 
 app = typer.Typer(
@@ -33,6 +34,7 @@ app.command("benchmark")(benchmark)
 app.command("report")(report)
 app.command("explore")(explore)
 app.command("budget")(budget)
+app.command("compare")(compare)
 
 
 @app.callback()

@@ -18,6 +18,7 @@ from .load import ResultsFolder, load_results
 from .render import render_html, render_markdown
 from .style import sensor_colors
 from .tables import allocation_table, delta_table, failed_table, table4_table
+from .verdict import verdict_blocks
 
 __all__ = ["CAPTIONS", "FORMATS", "build_blocks", "write_report"]
 
@@ -112,6 +113,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     """The whole report as blocks; draws the figures into ``figures_dir``."""
     colors = sensor_colors(folder.sensors, folder.reference)
     blocks = _overview(folder)
+    blocks += verdict_blocks(folder, colors, figures_dir)
     blocks += [
         Heading("Table 4: Macro F1 (mean ± SD)", 2),
         table4_table(folder.results, folder.sensors),

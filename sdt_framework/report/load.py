@@ -31,6 +31,7 @@ class ResultsFolder:
     results: pd.DataFrame
     per_class: pd.DataFrame | None = None
     confusion: pd.DataFrame | None = None
+    per_recording: pd.DataFrame | None = None
     allocation: pd.DataFrame | None = None
     skipped: pd.DataFrame | None = None
     features: pd.DataFrame | None = None
@@ -104,6 +105,7 @@ def load_results(results_dir: str | os.PathLike[str]) -> ResultsFolder:
     for attr, name in (
         ("per_class", "per_class.parquet"),
         ("confusion", "confusion.parquet"),
+        ("per_recording", "per_recording.parquet"),
         ("allocation", "allocation.csv"),
         ("skipped", "skipped.csv"),
         ("features", "features.parquet"),

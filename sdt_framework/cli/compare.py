@@ -1,0 +1,195 @@
+"""``sdt compare``: paired statistics and the verdict of one results folder, or of two."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Annotated, Any
+
+import numpy as np
+import typer
+from rich.markup import escape
+from rich.table import Table
+
+from ..errors import SDTError
+from .common import console, print_json
+
+__all__ = ["compare"]
+
+
+def _ci(low: float, high: float) -> str:
+    return "–" if np.isnan(low) else f"[{low:+.3f}, {high:+.3f}]"
+
+
+def _p(value: float) -> str:
+    return "–" if np.isnan(value) else f"{value:.3g}"
+
+
+def _cell_text(row: Any) -> str:
+    return (
+        f"{row.label} {row.delta:+.3f}\nreps {_ci(row.ci_low, row.ci_high)}"
+        f"\nrecs {_ci(row.rec_ci_low, row.rec_ci_high)}"
+    )
+
+
+def _print_tables(comparison: Any) -> None:
+    """Per table (machine): rows scenario x classifier, one column per candidate."""
+    table = comparison.table
+    candidates = comparison.candidates
+    cells = table[table["level"] == "cell"]
+    outer = [c for c in comparison.groups if c != "scenario"]
+    inner = [c for c in comparison.cells if c not in outer]
+    title = (
+        f"Δ Macro F1 to {comparison.baseline} with 95 % CIs over repetitions and recordings; "
+        f"margin ±{comparison.margin:g}"
+    )
+    for key, part in cells.groupby(outer, sort=False) if outer else [((), cells)]:
+        key = key if isinstance(key, tuple) else (key,)
+        out = Table(title=f"{title}, {' '.join(map(str, key))}", title_justify="left")
+        for column in inner:
+            out.add_column(column, no_wrap=True)
+        for candidate in candidates:
+            out.add_column(str(candidate), no_wrap=True)
+        rows = part.groupby(inner, sort=False)
+        previous = None
+        for values, row_part in rows:
+            values = values if isinstance(values, tuple) else (values,)
+            by_candidate = {r.candidate: r for r in row_part.itertuples()}
+            if previous is not None and values[0] != previous:
+                out.add_section()
+            shown = [str(v) if i or v != previous else "" for i, v in enumerate(values)]
+            previous = values[0]
+            out.add_row(
+                *shown,
+                *(_cell_text(by_candidate[c]) if c in by_candidate else "–" for c in candidates),
+            )
+        console.print(out)
+
+
+def _labels(folders: list[Any]) -> list[str]:
+    """Name each folder by what differs between them: feature set, dataset, else folder name."""
+    for column in ("feature_set", "dataset"):
+        values = [sorted(f.results[column].dropna().unique()) for f in folders]
+        if all(len(v) == 1 for v in values) and values[0] != values[1]:
+            return [v[0] for v in values]
+    names = [f.path.name for f in folders]
+    return names if names[0] != names[1] else [str(f.path) for f in folders]
+
+
+def _two_folders(folders: list[Any], baseline: str | None) -> tuple[dict[str, Any], Path]:
+    from ..verdict import stack_folders
+
+    labels = _labels(folders)
+    if baseline is not None and baseline not in labels:
+        raise SDTError(f"with two folders --baseline must be one of {labels}, got {baseline!r}")
+    records = [f.per_recording for f in folders]
+    per_recording = None
+    if all(r is not None and not r.empty for r in records):
+        per_recording = stack_folders(records, labels)
+    options = {
+        "results": stack_folders([f.results for f in folders], labels),
+        "baseline": baseline or labels[0],
+        "treatment": "source",
+        "cells": ["machine", "scenario", "sensor", "classifier"],
+        "per_recording": per_recording,
+        "allocation": folders[0].allocation,
+    }
+    return options, folders[1].path / f"comparison_vs_{folders[0].path.name}.csv"
+
+
+def compare(
+    results_dirs: Annotated[
+        list[Path],
+        typer.Argument(
+            metavar="RESULTS_DIR [OTHER_DIR]",
+            help="A folder written by `sdt benchmark`; with a second folder, compare the two.",
+        ),
+    ],
+    baseline: Annotated[
+        str | None,
+        typer.Option(
+            "--baseline",
+            help="Sensor to compare with (default: the folder's reference sensor); "
+            "with two folders, the label of one of them (default: the first).",
+        ),
+    ] = None,
+    margin: Annotated[
+        float,
+        typer.Option("--margin", help="Equivalence margin in Macro F1 (> 0)."),
+    ] = 0.02,
+    as_json: Annotated[bool, typer.Option("--json", help="Print JSON instead of tables.")] = False,
+) -> None:
+    """Paired comparison of every sensor with the reference, and the verdict.
+
+    Runs of two sensors sharing machine, scenario, classifier and repetition
+    are paired. Per cell and per machine/scenario: the mean Macro F1
+    difference with a 95 % interval over repetitions and one over resampled
+    test recordings, a paired t p-value (Holm-adjusted over cells) and the
+    label equivalent / worse / better / inconclusive at the margin; then the
+    Friedman test, Nemenyi critical difference and plain-sentence verdict.
+    Writes comparison.csv into RESULTS_DIR. With two folders (e.g. two
+    feature sets), runs are paired by machine, scenario, sensor, classifier
+    and repetition, and the table goes to OTHER_DIR/comparison_vs_<first>.csv.
+
+    Example:
+
+      sdt benchmark --quick --out results/first-look
+
+      sdt compare results/first-look
+
+      sdt compare results/first-look --baseline adxl357 --margin 0.05 --json
+
+      sdt compare results/paper8 results/my-features
+    """
+    from ..bench.results import write_frame
+    from ..report.load import load_results
+    from ..verdict import compare as run_compare
+    from ..verdict import verdict
+
+    if len(results_dirs) > 2:
+        raise SDTError(f"give one or two results folders, got {len(results_dirs)}")
+    folders = [load_results(path) for path in results_dirs]
+    if len(folders) == 2:
+        options, csv_path = _two_folders(folders, baseline)
+    else:
+        folder = folders[0]
+        options = {
+            "results": folder.results,
+            "baseline": baseline or folder.reference,
+            "per_recording": folder.per_recording,
+            "allocation": folder.allocation,
+            "order": folder.sensors,
+        }
+        csv_path = folder.path / "comparison.csv"
+    comparison = run_compare(margin=margin, **options)
+    write_frame(comparison.table, csv_path)
+    findings = verdict(comparison)
+    if as_json:
+        ranking = comparison.ranking
+        print_json(
+            {
+                "baseline": comparison.baseline,
+                "margin": comparison.margin,
+                "treatment": comparison.treatment,
+                "csv": str(csv_path),
+                "verdict": [{"scope": f.scope, "text": f.text} for f in findings],
+                "ranking": None
+                if ranking is None
+                else {
+                    "average_ranks": ranking.ranks.to_dict(),
+                    "n_blocks": ranking.n_blocks,
+                    "chi2": ranking.chi2,
+                    "p_value": ranking.p_value,
+                    "ff": ranking.ff,
+                    "p_ff": ranking.p_ff,
+                    "cd": ranking.cd,
+                },
+                "table": json.loads(comparison.table.to_json(orient="records")),
+            }
+        )
+        return
+    _print_tables(comparison)
+    console.print("[bold]Verdict[/]")
+    for finding in findings:
+        console.print(f"[bold]{escape(finding.scope)}[/]: {escape(finding.text)}", highlight=False)
+    console.print(f"comparison table: {csv_path}", highlight=False, soft_wrap=True)

@@ -1,0 +1,90 @@
+"""The report's opening section: the verdict of :mod:`sdt_framework.verdict` as blocks.
+
+Each sensor against the reference at the default margin: sentences per
+machine and scenario, overall and for the ranking, a table of the group
+labels, and the critical-difference diagram. The numbers are those ``sdt
+compare`` prints for the same folder; a folder that cannot be compared (no
+reference run, a single sensor) gets one sentence saying why.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ..errors import SDTError
+from ..verdict import Comparison, compare, plot_cd_diagram, verdict
+from ..verdict.sentences import fmt_delta
+from .document import Block, Figure, Heading, Items, Paragraph, Table
+from .load import ResultsFolder
+from .style import save_figure
+
+__all__ = ["CD_FIGURE", "verdict_blocks"]
+
+CD_FIGURE = "cd_diagram.png"
+
+
+def _intro(comparison: Comparison) -> Paragraph:
+    return Paragraph(
+        f"Each sensor against the reference `{comparison.baseline}`, runs paired by machine, "
+        f"scenario, classifier and repetition, at a margin of ±{comparison.margin:g} Macro F1. "
+        "Δ is the sensor's Macro F1 minus the reference's, with its 95 % interval over "
+        "repetitions in brackets. **equivalent**: the 95 % intervals over repetitions and over "
+        "resampled test recordings both lie inside ±margin; **worse** / **better**: both lie "
+        "below −margin / above +margin; otherwise **inconclusive**, with the reason. "
+        "`sdt compare` prints the per-cell table and writes comparison.csv; the statistics are "
+        "explained in docs/report.md."
+    )
+
+
+def _group_table(comparison: Comparison) -> Table | None:
+    table = comparison.table
+    groups = table[table["level"] == "group"]
+    if groups.empty:
+        return None
+    keys = comparison.groups
+    candidates = comparison.candidates
+    rows = []
+    for key, part in groups.groupby(keys, sort=False):
+        key = key if isinstance(key, tuple) else (key,)
+        by_candidate = {r.candidate: r for r in part.itertuples()}
+        cells = [
+            f"**{r.label}** {fmt_delta(r)}" if (r := by_candidate.get(c)) is not None else "–"
+            for c in candidates
+        ]
+        rows.append((*map(str, key), *cells))
+    note = "Label over all classifiers of the machine and scenario (group rows of comparison.csv)."
+    return Table((*keys, *candidates), tuple(rows), note)
+
+
+def verdict_blocks(
+    folder: ResultsFolder, colors: dict[str, str], figures_dir: Path, margin: float = 0.02
+) -> list[Block]:
+    """The verdict section: heading, how to read it, findings, group table, CD diagram."""
+    blocks: list[Block] = [Heading("Verdict", 2)]
+    try:
+        comparison = compare(
+            folder.results,
+            folder.reference,
+            margin=margin,
+            per_recording=folder.per_recording,
+            allocation=folder.allocation,
+            order=folder.sensors,
+        )
+    except SDTError as exc:
+        return [*blocks, Paragraph(f"Not available: {exc}.")]
+    blocks.append(_intro(comparison))
+    blocks.append(Items(tuple(f"**{f.scope}**: {f.text}" for f in verdict(comparison))))
+    group_table = _group_table(comparison)
+    if group_table is not None:
+        blocks.append(group_table)
+    if comparison.ranking is not None:
+        fig = plot_cd_diagram(comparison.ranking, colors, title="Average rank of Macro F1")
+        path = save_figure(fig, figures_dir / CD_FIGURE)
+        caption = (
+            "Critical-difference diagram (Demšar 2006): average rank of each sensor over the "
+            f"{comparison.ranking.n_blocks} blocks (1 = best, on the left); sensors joined by a "
+            "bar are not significantly different (Nemenyi); the CD bar shows the distance two "
+            "average ranks must exceed."
+        )
+        blocks.append(Figure(path, caption, "Critical-difference diagram"))
+    return blocks

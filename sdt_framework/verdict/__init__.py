@@ -1,0 +1,45 @@
+"""The engineer's verdict: paired statistics between sensors, equivalence, ranking.
+
+Pure functions on the tidy results table (and the per-recording confusion
+counts), above ``bench`` results and below ``report`` and the CLI: nothing
+here reads or writes files, so the same numbers feed ``sdt compare``, the
+report's verdict section and a user's notebook.
+
+Public API
+----------
+compare(results, baseline, *, margin=0.02, ...) -> Comparison
+    Paired differences per cell, per machine and scenario and overall, with
+    repetition and recording intervals, Holm-adjusted p-values, TOST and labels.
+stack_folders(frames, labels)
+    Two results tables as one, to compare two folders ("source" as treatment).
+verdict(comparison) -> list[Finding]
+    Plain sentences, each citing its numbers.
+friedman_nemenyi(scores) -> Ranking ; plot_cd_diagram(ranking)
+    Friedman test, Nemenyi post-hoc, critical difference and its diagram.
+"""
+
+from __future__ import annotations
+
+from .cdplot import plot_cd_diagram
+from .compare import CELL_KEYS, Comparison, compare, stack_folders
+from .equivalence import LABELS, interval_label
+from .ranking import Ranking, critical_difference, friedman_nemenyi, q_alpha
+from .recordings import macro_f1
+from .sentences import Finding, verdict
+
+__all__ = [
+    "CELL_KEYS",
+    "LABELS",
+    "Comparison",
+    "Finding",
+    "Ranking",
+    "compare",
+    "critical_difference",
+    "friedman_nemenyi",
+    "interval_label",
+    "macro_f1",
+    "plot_cd_diagram",
+    "q_alpha",
+    "stack_folders",
+    "verdict",
+]
