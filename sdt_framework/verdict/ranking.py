@@ -95,8 +95,8 @@ def friedman_nemenyi(scores: pd.DataFrame, alpha: float = 0.05) -> Ranking:
     average = pd.Series(ranks.mean(axis=0), index=scores.columns).sort_values(kind="stable")
     test = stats.friedmanchisquare(*scores.to_numpy(float).T)
     chi2 = 12 * n / (k * (k + 1)) * (float(np.sum(average**2)) - k * (k + 1) ** 2 / 4)
-    with np.errstate(divide="ignore"):
-        ff = (n - 1) * chi2 / (n * (k - 1) - chi2)
+    spare = n * (k - 1) - chi2  # 0 when every block ranks the treatments alike
+    ff = (n - 1) * chi2 / spare if spare > 1e-12 else np.inf
     p_ff = float(stats.f.sf(ff, k - 1, (k - 1) * (n - 1))) if np.isfinite(ff) else 0.0
     nemenyi = sp.posthoc_nemenyi_friedman(scores.to_numpy(float))
     nemenyi.index = nemenyi.columns = scores.columns

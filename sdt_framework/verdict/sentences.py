@@ -96,9 +96,9 @@ def _group_finding(comparison: Comparison, key: tuple, part: pd.DataFrame) -> Fi
         for c, v in zip(comparison.groups, key, strict=True):
             mask &= cells[c] == v
         mine = cells[mask & (cells["candidate"] == row.candidate)]
+        over = _over(comparison, int(row.n_cells))
         sentences.append(
-            f"{row.candidate} vs {base}: {row.label} over the {_over(comparison, int(row.n_cells))} "
-            f"({fmt_delta(row)}); "
+            f"{row.candidate} vs {base}: {row.label} over the {over} ({fmt_delta(row)}); "
             f"{_cells_sentence(comparison, mine)}."
         )
     return Finding(_scope(comparison, key), " ".join(sentences))

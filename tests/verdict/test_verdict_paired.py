@@ -37,7 +37,7 @@ def test_tost_at_half_alpha_agrees_with_the_interval_inside_the_margins():
     for _ in range(200):
         d = rng.normal(rng.uniform(-0.04, 0.04), rng.uniform(0.001, 0.03), 5)
         low, high = t_interval(*_summary(d), 0.95)
-        inside = -0.02 < low and high < 0.02
+        inside = low > -0.02 and high < 0.02
         assert (tost_pvalue(*_summary(d), 0.02) < 0.025) == inside
 
 
