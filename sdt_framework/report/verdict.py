@@ -42,6 +42,9 @@ def _group_table(comparison: Comparison) -> Table | None:
     if groups.empty:
         return None
     keys = comparison.groups
+    shown = [
+        i for i, k in enumerate(keys) if groups[k].nunique() > 1 or k in ("machine", "scenario")
+    ]
     candidates = comparison.candidates
     rows = []
     for key, part in groups.groupby(keys, sort=False):
@@ -51,9 +54,9 @@ def _group_table(comparison: Comparison) -> Table | None:
             f"**{r.label}** {fmt_delta(r)}" if (r := by_candidate.get(c)) is not None else "–"
             for c in candidates
         ]
-        rows.append((*map(str, key), *cells))
+        rows.append((*(str(key[i]) for i in shown), *cells))
     note = "Label over all classifiers of the machine and scenario (group rows of comparison.csv)."
-    return Table((*keys, *candidates), tuple(rows), note)
+    return Table((*(keys[i] for i in shown), *candidates), tuple(rows), note)
 
 
 def verdict_blocks(

@@ -47,14 +47,13 @@ def cell_rows(
     baseline: str,
     cells: list[str],
     recordings: RecordingSets | None,
-    per_recording: pd.DataFrame | None,
     treatment: str,
     alpha: float,
 ) -> tuple[list[dict[str, Any]], Draws]:
     """One row per (candidate, cell) and the recording resamples of each (None if absent)."""
     sides: dict[tuple, pd.DataFrame] = {}
-    if recordings is not None and per_recording is not None:
-        sides = dict(iter(per_recording.groupby([*cells, treatment], sort=False)))
+    if recordings is not None:
+        sides = dict(iter(recordings.frame.groupby([*cells, treatment], sort=False)))
     test_keys = recordings.group if recordings is not None else []
     rows: list[dict[str, Any]] = []
     draws: Draws = {}
@@ -74,7 +73,7 @@ def cell_rows(
             sample, detail = None, "no per-recording counts stored (per_recording.parquet)"
             if recordings is not None:
                 key = tuple(row[k] for k in test_keys)
-                empty = pd.DataFrame(columns=["repeat"])
+                empty = recordings.frame.iloc[:0]
                 sample, detail = recordings.mean_difference(
                     sides.get((*cell, candidate), empty),
                     sides.get((*cell, baseline), empty),

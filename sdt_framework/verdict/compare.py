@@ -152,9 +152,7 @@ def compare(
     if per_recording is not None and not per_recording.empty:
         test_keys = [c for c in TEST_SET_KEYS if c in cells]
         recording_sets = RecordingSets(per_recording, test_keys, n_boot=n_boot, seed=seed)
-    rows, draws = cell_rows(
-        diffs, wide, baseline, cells, recording_sets, per_recording, treatment, alpha
-    )
+    rows, draws = cell_rows(diffs, wide, baseline, cells, recording_sets, treatment, alpha)
     rows += aggregate_rows(rows, diffs, draws, cells, groups, alpha)
     table = _sorted(pd.DataFrame(rows), candidates)
     table["ci_low"], table["ci_high"] = t_interval(

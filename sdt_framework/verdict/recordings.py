@@ -25,7 +25,7 @@ import pandas as pd
 
 from ..seeding import rng
 
-__all__ = ["RecordingSets", "TestSet", "macro_f1", "stratified_weights"]
+__all__ = ["RecordingSets", "TestSet", "macro_f1", "resample_counts", "stratified_weights"]
 
 
 def macro_f1(confusion: np.ndarray) -> np.ndarray:
@@ -95,59 +95,57 @@ class RecordingSets:
     def __init__(
         self, per_recording: pd.DataFrame, group: Sequence[str], n_boot: int = 2000, seed: int = 0
     ) -> None:
-        self.frame = per_recording
         self.group = list(group)
         self.n_boot = n_boot
         self.seed = seed
-        self._sets: dict[tuple, TestSet | None] = {}
-        self._by_group = dict(iter(per_recording.groupby(self.group, sort=False, dropna=False)))
+        self._sets: dict[tuple, TestSet] = {}
+        frame = per_recording.reset_index(drop=True)
+        codes = np.zeros((len(frame), 3), dtype=np.int64)  # recording, true, predicted
+        for key, rows in frame.groupby(self.group, sort=False, dropna=False):
+            key = key if isinstance(key, tuple) else (key,)
+            test = self._make(key, rows)
+            self._sets[key] = test
+            codes[rows.index, 0] = np.searchsorted(test.recordings, rows["recording_id"])
+            for column, name in ((1, "true"), (2, "predicted")):
+                codes[rows.index, column] = np.searchsorted(test.classes, rows[name])
+        self.frame = frame.assign(_rec=codes[:, 0], _true=codes[:, 1], _pred=codes[:, 2])
+
+    def _make(self, key: tuple, rows: pd.DataFrame) -> TestSet:
+        labels = rows.drop_duplicates("recording_id").sort_values("recording_id")
+        classes = tuple(sorted(set(rows["true"]) | set(rows["predicted"])))
+        strata = np.searchsorted(classes, labels["true"])
+        generator = rng(self.seed, "verdict-recordings", *key)
+        weights = stratified_weights(strata, self.n_boot, generator)
+        return TestSet(tuple(labels["recording_id"]), classes, strata, weights)
 
     def test_set(self, key: tuple) -> TestSet | None:
         """The test set of group ``key`` (None when no counts were stored for it)."""
-        if key not in self._sets:
-            rows = self._by_group.get(key)
-            if rows is None or rows.empty:
-                self._sets[key] = None
-            else:
-                labels = rows.drop_duplicates("recording_id").sort_values("recording_id")
-                classes = tuple(sorted(set(rows["true"]) | set(rows["predicted"])))
-                strata = labels["true"].map({c: i for i, c in enumerate(classes)}).to_numpy()
-                generator = rng(self.seed, "verdict-recordings", *key)
-                self._sets[key] = TestSet(
-                    tuple(labels["recording_id"]),
-                    classes,
-                    strata,
-                    stratified_weights(strata, self.n_boot, generator),
-                )
-        return self._sets[key]
+        return self._sets.get(key)
 
-    def cube(self, rows: pd.DataFrame, test: TestSet, repeats: Sequence[int]) -> np.ndarray | None:
-        """Counts as ``(repeat, recording, true, predicted)``; None when a run has none."""
-        repeat_index = {r: i for i, r in enumerate(repeats)}
-        rows = rows[rows["repeat"].isin(repeat_index)]
-        if rows.empty or rows["repeat"].nunique() < len(repeats):
-            return None
-        recording_index = {r: i for i, r in enumerate(test.recordings)}
-        class_index = {c: i for i, c in enumerate(test.classes)}
-        rec = rows["recording_id"].map(recording_index)
-        if rec.isna().any():
+    @staticmethod
+    def cube(rows: pd.DataFrame, test: TestSet, repeats: Sequence[int]) -> np.ndarray | None:
+        """Coded ``rows`` as counts ``(repeat, recording, true, predicted)``; None if incomplete."""
+        order = np.asarray(sorted(repeats))
+        repeat = rows["repeat"].to_numpy()
+        keep = np.isin(repeat, order)
+        if len(np.unique(repeat[keep])) < len(order):
             return None
         n_rec, n_cls = len(test.recordings), len(test.classes)
         flat = (
-            (rows["repeat"].map(repeat_index).to_numpy() * n_rec + rec.to_numpy(dtype=int)) * n_cls
-            + rows["true"].map(class_index).to_numpy()
-        ) * n_cls + rows["predicted"].map(class_index).to_numpy()
-        counts = np.bincount(flat, weights=rows["count"].to_numpy(float), minlength=0)
-        counts = np.pad(counts, (0, len(repeats) * n_rec * n_cls * n_cls - len(counts)))
-        return counts.reshape(len(repeats), n_rec, n_cls, n_cls)
+            (np.searchsorted(order, repeat[keep]) * n_rec + rows["_rec"].to_numpy()[keep]) * n_cls
+            + rows["_true"].to_numpy()[keep]
+        ) * n_cls + rows["_pred"].to_numpy()[keep]
+        size = len(order) * n_rec * n_cls * n_cls
+        counts = np.bincount(flat, weights=rows["count"].to_numpy(float)[keep], minlength=size)
+        return counts.reshape(len(order), n_rec, n_cls, n_cls)
 
     def mean_difference(
         self, candidate: pd.DataFrame, baseline: pd.DataFrame, key: tuple, repeats: Sequence[int]
     ) -> tuple[np.ndarray | None, str]:
         """Resampled mean (over ``repeats``) Macro F1 difference candidate - baseline.
 
-        ``candidate`` and ``baseline`` are the per-recording rows of one cell's
-        two sides. Returns ``(n_boot,)`` draws, or None and the reason.
+        ``candidate`` and ``baseline`` are one cell's two sides, as rows of
+        :attr:`frame` (coded). Returns ``(n_boot,)`` draws, or None and the reason.
         """
         test = self.test_set(key)
         if test is None:
@@ -156,14 +154,15 @@ class RecordingSets:
             return None, "1 test recording in some class: nothing to resample"
         cubes = [self.cube(side, test, repeats) for side in (candidate, baseline)]
         if cubes[0] is None or cubes[1] is None:
-            return (
-                None,
-                "per-recording counts missing for some runs (resumed from an older version?)",
-            )
+            return None, "per-recording counts missing for some runs (stored by an older version)"
         if not np.array_equal(cubes[0].sum(axis=(0, 3)) > 0, cubes[1].sum(axis=(0, 3)) > 0):
             return None, "the two sides were tested on different recordings"
-        f1 = [
-            macro_f1(np.einsum("bk,rkij->brij", test.weights, cube, optimize=True))
-            for cube in cubes
-        ]
+        f1 = [macro_f1(resample_counts(test.weights, cube)) for cube in cubes]
         return (f1[0] - f1[1]).mean(axis=1), ""
+
+
+def resample_counts(weights: np.ndarray, cube: np.ndarray) -> np.ndarray:
+    """Summed counts ``(n_boot, repeat, C, C)`` of each resample: one matrix product."""
+    n_rep, n_rec, n_cls, _ = cube.shape
+    flat = cube.transpose(1, 0, 2, 3).reshape(n_rec, n_rep * n_cls * n_cls)
+    return (weights @ flat).reshape(len(weights), n_rep, n_cls, n_cls)

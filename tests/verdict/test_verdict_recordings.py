@@ -60,9 +60,11 @@ def test_recording_counts_sum_to_the_confusion_matrix():
 
 
 def _difference(candidate: pd.DataFrame, baseline: pd.DataFrame):
-    both = pd.concat([candidate, baseline])
+    both = pd.concat([candidate.assign(side="c"), baseline.assign(side="b")])
     sets = RecordingSets(both, ["machine", "scenario"], n_boot=4000, seed=0)
-    return sets.mean_difference(candidate, baseline, ("M", "forward"), [0])
+    coded = sets.frame
+    sides = [coded[coded["side"] == side] for side in ("c", "b")]
+    return sets.mean_difference(*sides, ("M", "forward"), [0])
 
 
 def test_identical_sides_differ_by_exactly_zero_in_every_resample():
