@@ -40,12 +40,14 @@ def _print_tables(comparison: Any) -> None:
     outer = [c for c in comparison.groups if c != "scenario"]
     inner = [c for c in comparison.cells if c not in outer]
     title = (
-        f"Δ Macro F1 to {comparison.baseline} with 95 % CIs over repetitions and recordings; "
+        f"Δ Macro F1 to {comparison.baseline}, 95 % CIs over repetitions and recordings, "
         f"margin ±{comparison.margin:g}"
     )
+    named = [i for i, c in enumerate(outer) if cells[c].nunique() > 1 or c == "machine"]
     for key, part in cells.groupby(outer, sort=False) if outer else [((), cells)]:
         key = key if isinstance(key, tuple) else (key,)
-        out = Table(title=f"{title}, {' '.join(map(str, key))}", title_justify="left")
+        where = " ".join(str(key[i]) for i in named)
+        out = Table(title=f"{where}: {title}" if where else title, title_justify="left")
         for column in inner:
             out.add_column(column, no_wrap=True)
         for candidate in candidates:

@@ -32,6 +32,25 @@ __all__ = ["CELL_KEYS", "Comparison", "compare", "stack_folders"]
 CELL_KEYS = ("dataset", "feature_set", "machine", "scenario", "classifier")
 #: what fixes the test recordings of a run
 TEST_SET_KEYS = ("dataset", "machine", "scenario")
+#: the numbers of a comparison row, in comparison.csv order (label, reason and notes follow)
+_COLUMNS = [
+    "n_repeats",
+    "baseline_mean",
+    "candidate_mean",
+    "delta",
+    "sd",
+    "ci_low",
+    "ci_high",
+    "n_recordings",
+    "rec_ci_low",
+    "rec_ci_high",
+    "p_value",
+    "p_holm",
+    "p_tost",
+    "label",
+    "reason",
+    "n_cells",
+]
 
 
 @dataclass
@@ -180,6 +199,8 @@ def compare(
     table["label"] = [label for label, _ in labels]
     table["reason"] = [reason for _, reason in labels]
     table.insert(0, "margin", margin)
+    first = ["margin", "level", *cells, "baseline", "candidate", *_COLUMNS]
+    table = table[first + [c for c in table.columns if c not in first]]
     blocks = ok.groupby([*cells, treatment])["macro_f1"].mean().unstack(treatment).dropna()
     means = blocks.groupby(level=groups).mean() if groups else blocks.mean().to_frame().T
     ranking, note = None, ""

@@ -155,9 +155,9 @@ def _caveats(comparison: Comparison) -> list[Finding]:
     return [
         Finding(
             "caveat",
-            f"1 physical test run per class in {', '.join(where)}: the recording CI there "
-            "resamples the run's channels (simultaneous views of one event), not runs, so it "
-            "understates run-to-run variation.",
+            f"some class has a single physical test run in {', '.join(where)}: the recording CI "
+            "there resamples that run's channels (simultaneous views of one event), not runs, so "
+            "it understates run-to-run variation.",
         )
     ]
 
