@@ -59,10 +59,33 @@ def _group_table(comparison: Comparison) -> Table | None:
     return Table((*(keys[i] for i in shown), *candidates), tuple(rows), note)
 
 
+def _cd_figure(comparison: Comparison, colors: dict[str, str], figures_dir: Path) -> Block:
+    ranking = comparison.ranking
+    assert ranking is not None
+    try:
+        fig = plot_cd_diagram(ranking, colors, title="Average rank of Macro F1")
+        path = save_figure(fig, figures_dir / CD_FIGURE)
+    except Exception as exc:  # one broken figure must not lose the rest of the report
+        message = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
+        return Paragraph(f"Critical-difference diagram not drawn: {message}.")
+    caption = (
+        "Critical-difference diagram (Demšar 2006): average rank of each sensor over the "
+        f"{ranking.n_blocks} blocks (1 = best, on the left); sensors joined by a bar are not "
+        "significantly different (Nemenyi); the CD bar shows the distance two average ranks "
+        "must exceed."
+    )
+    return Figure(path, caption, "Critical-difference diagram")
+
+
 def verdict_blocks(
     folder: ResultsFolder, colors: dict[str, str], figures_dir: Path, margin: float = 0.02
 ) -> list[Block]:
-    """The verdict section: heading, how to read it, findings, group table, CD diagram."""
+    """The verdict section: heading, how to read it, findings, group table, CD diagram.
+
+    A folder that cannot be compared (no reference run, nothing to pair) gets
+    one sentence saying why; an unexpected failure is reported the same way,
+    so the rest of the report is still written.
+    """
     blocks: list[Block] = [Heading("Verdict", 2)]
     try:
         comparison = compare(
@@ -73,21 +96,17 @@ def verdict_blocks(
             allocation=folder.allocation,
             order=folder.sensors,
         )
+        findings = verdict(comparison)
     except SDTError as exc:
         return [*blocks, Paragraph(f"Not available: {exc}.")]
+    except Exception as exc:  # a failing verdict must not lose the rest of the report
+        message = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
+        return [*blocks, Paragraph(f"Not available: the comparison failed ({message}).")]
     blocks.append(_intro(comparison))
-    blocks.append(Items(tuple(f"**{f.scope}**: {f.text}" for f in verdict(comparison))))
+    blocks.append(Items(tuple(f"**{f.scope}**: {f.text}" for f in findings)))
     group_table = _group_table(comparison)
     if group_table is not None:
         blocks.append(group_table)
     if comparison.ranking is not None:
-        fig = plot_cd_diagram(comparison.ranking, colors, title="Average rank of Macro F1")
-        path = save_figure(fig, figures_dir / CD_FIGURE)
-        caption = (
-            "Critical-difference diagram (Demšar 2006): average rank of each sensor over the "
-            f"{comparison.ranking.n_blocks} blocks (1 = best, on the left); sensors joined by a "
-            "bar are not significantly different (Nemenyi); the CD bar shows the distance two "
-            "average ranks must exceed."
-        )
-        blocks.append(Figure(path, caption, "Critical-difference diagram"))
+        blocks.append(_cd_figure(comparison, colors, figures_dir))
     return blocks

@@ -74,7 +74,7 @@ class TestSet:
     @property
     def smallest_class(self) -> int:
         """Number of recordings of the class with the fewest test recordings."""
-        return int(np.bincount(self.strata).min())
+        return int(np.unique(self.strata, return_counts=True)[1].min())
 
 
 class RecordingSets:

@@ -9,11 +9,12 @@ import sys
 
 import numpy as np
 import pandas as pd
+import pytest
 from sklearn.metrics import f1_score
 from typer.testing import CliRunner
 
-from sdt_framework.cli.main import app
-from sdt_framework.verdict import LABELS
+from sdt_framework.cli.main import app, main
+from sdt_framework.verdict import LABELS, compare
 
 runner = CliRunner()
 RUN = ["machine", "scenario", "sensor", "classifier", "repeat"]
@@ -102,7 +103,7 @@ def test_a_folder_without_per_recording_counts_still_compares(results_dir):
     assert all("repetition CI only" in r for r in decided["reason"])
 
 
-def test_bad_input_is_one_line_and_exit_2(results_dir, tmp_path):
+def test_bad_input_is_one_line_and_exit_2(results_dir, tmp_path, monkeypatch, capsys):
     moved = tmp_path / "moved"
     shutil.copytree(results_dir, moved)
     frame = pd.read_parquet(moved / "results.parquet")
@@ -113,9 +114,52 @@ def test_bad_input_is_one_line_and_exit_2(results_dir, tmp_path):
         (["compare", results_dir, "--margin", "0"], "margin must be"),
         (["compare", results_dir, moved], "nothing to pair"),
     ]
-    for args, message in cases:
-        result = sdt(*args)
-        lines = [line for line in result.stderr.splitlines() if line.strip()]
-        assert result.returncode == 2, (args, result.stderr)
-        assert "Traceback" not in result.stderr
-        assert " ".join(lines).startswith("error: ") and message in " ".join(lines), lines
+    for args, message in cases:  # in-process through the real entry point
+        monkeypatch.setattr(sys, "argv", ["sdt", *map(str, args)])
+        with pytest.raises(SystemExit) as stop:
+            main()
+        err = capsys.readouterr().err
+        lines = [line for line in err.splitlines() if line.strip()]
+        assert stop.value.code == 2, (args, err)
+        assert len(lines) == 1 and lines[0].startswith("error: ") and message in lines[0], lines
+    result = sdt("compare", tmp_path / "missing")  # and once as a user runs it
+    assert result.returncode == 2 and "Traceback" not in result.stderr
+    assert result.stderr.strip().startswith("error: ") and "not a results folder" in result.stderr
+
+
+def test_verdict_section_with_three_sensors_draws_the_cd_diagram(results_dir, tmp_path):
+    from sdt_framework.report.document import Figure, Items
+    from sdt_framework.report.load import load_results
+    from sdt_framework.report.verdict import verdict_blocks
+
+    results = pd.read_parquet(results_dir / "results.parquet")
+    third = results[results["sensor"] == "adxl345"].assign(
+        sensor="adxl345-worse", macro_f1=lambda f: f["macro_f1"] - 0.2
+    )
+    pd.concat([results, third]).to_parquet(results_dir / "results.parquet")
+    blocks = verdict_blocks(load_results(results_dir), {}, tmp_path / "figures")
+    figure = next(b for b in blocks if isinstance(b, Figure))
+    assert figure.path.is_file() and figure.path.stat().st_size > 5000
+    items = next(b for b in blocks if isinstance(b, Items)).items
+    ranking = next(i for i in items if i.startswith("**ranking**"))
+    assert "3 sensors" in ranking and "adxl345-worse 3.00" in ranking
+    # paired differences shift by exactly -0.2; the made-up sensor has no per-recording counts
+    table = compare(load_results(results_dir).results, "wilcoxon-786b10").table
+    overall = table[table["level"] == "overall"].set_index("candidate")
+    assert overall.loc["adxl345-worse", "delta"] == pytest.approx(
+        overall.loc["adxl345", "delta"] - 0.2
+    )
+    text = next(i for i in items if i.startswith("**overall, adxl345-worse**"))
+    assert f"Δ {overall.loc['adxl345-worse', 'delta']:+.3f}" in text
+
+
+def test_verdict_section_says_why_when_the_reference_is_missing(results_dir, tmp_path):
+    from sdt_framework.report.document import Paragraph
+    from sdt_framework.report.load import load_results
+    from sdt_framework.report.verdict import verdict_blocks
+
+    results = pd.read_parquet(results_dir / "results.parquet")
+    results[results["sensor"] != "wilcoxon-786b10"].to_parquet(results_dir / "results.parquet")
+    blocks = verdict_blocks(load_results(results_dir), {}, tmp_path)
+    assert isinstance(blocks[1], Paragraph)
+    assert blocks[1].text.startswith("Not available: baseline 'wilcoxon-786b10' has no")
