@@ -53,14 +53,17 @@ def _print_tables(comparison: Any) -> None:
         for candidate in candidates:
             out.add_column(str(candidate), no_wrap=True)
         rows = part.groupby(inner, sort=False)
-        previous = None
+        previous: tuple = ()
         for values, row_part in rows:
             values = values if isinstance(values, tuple) else (values,)
             by_candidate = {r.candidate: r for r in row_part.itertuples()}
-            if previous is not None and values[0] != previous:
+            if previous and values[0] != previous[0]:
                 out.add_section()
-            shown = [str(v) if i or v != previous else "" for i, v in enumerate(values)]
-            previous = values[0]
+            # a key is shown when it or a key to its left changed (a nested layout)
+            shown = [
+                str(v) if values[: i + 1] != previous[: i + 1] else "" for i, v in enumerate(values)
+            ]
+            previous = values
             out.add_row(
                 *shown,
                 *(_cell_text(by_candidate[c]) if c in by_candidate else "–" for c in candidates),

@@ -156,6 +156,7 @@ def compare(
     """
     ok = _checked(results, baseline, margin, treatment)
     cells = [c for c in (cells or CELL_KEYS) if c in ok.columns]
+    ok = ok.assign(**{c: ok[c].fillna("") for c in cells})  # a blank key still pairs, not drops
     groups = [c for c in cells if c not in ("classifier", "sensor")]
     wide = _pivot(ok, cells, treatment)
     candidates = [c for c in order if c in wide.columns and c != baseline]
