@@ -11,9 +11,9 @@ from . import dataset as dataset_cli
 from .benchmark import benchmark
 from .budget import budget
 from .chain import register as register_chain_commands
+from .compare import compare
 from .explore import explore
 from .failures import InterruptibleGroup, run
-from .compare import compare
 from .report import report
 
 app = typer.Typer(
