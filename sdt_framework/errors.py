@@ -8,6 +8,7 @@ is a bug and keeps its traceback.
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterable
 
 from pydantic import ValidationError
@@ -105,6 +106,9 @@ def one_line(text: object, limit: int = 300) -> str:
     return flat if len(flat) <= limit else flat[: limit - 3] + "..."
 
 
+_FIELD = re.compile(r"^(\w+|\d+)$")
+
+
 def validation_summary(exc: Exception) -> str:
     """One line naming each invalid field of a pydantic ``ValidationError`` and why.
 
@@ -113,11 +117,14 @@ def validation_summary(exc: Exception) -> str:
     """
     if not isinstance(exc, ValidationError):
         return one_line(f"{type(exc).__name__}: {exc}")
-    parts = []
+    parts: dict[str, str] = {}
     for error in exc.errors():
-        field = ".".join(str(part) for part in error.get("loc", ()))
+        # a union field (e.g. a rate that is a number or "native") reports each branch
+        # under a tag such as 'constrained-float': name the field once, first reason
+        loc = [str(p) for p in error.get("loc", ()) if _FIELD.match(str(p))]
+        field = ".".join(loc)
         reason = str(error.get("msg", "invalid")).removeprefix("Value error, ")
         if error.get("type") == "extra_forbidden":
             reason = "unknown field"
-        parts.append(f"field {field!r}: {reason}" if field else reason)
-    return one_line("; ".join(parts))
+        parts.setdefault(field, f"field {field!r}: {reason}" if field else reason)
+    return one_line("; ".join(parts.values()))

@@ -224,9 +224,11 @@ class Registry:
         base, modes = split_name(name)
         if base in self._items[PartSpec] or (PartSpec, base) in self._conflicts:
             return resolve(self.part(base), modes).sensor
+        note = self.filter_note
         if modes and base in self._items[SensorSpec]:
-            raise UnknownNameError("part", base, self._items[PartSpec])
-        raise UnknownNameError("sensor", name, [*self._items[SensorSpec], *self._items[PartSpec]])
+            raise UnknownNameError("part", base, self._items[PartSpec], note=note)
+        known = [*self._items[SensorSpec], *self._items[PartSpec]]
+        raise UnknownNameError("sensor", name, known, note=note)
 
     def sensors(self) -> list[SensorSpec]:
         """All sensor profiles, sorted by name (parts: :meth:`parts`)."""

@@ -62,7 +62,8 @@ def test_out_under_a_file_is_one_line_naming_the_path(signal_file, tmp_path, mon
     status, _, err = run_main(monkeypatch, capsys, *args)
     assert status == 2
     line = one_error_line(err)
-    assert f"'{blocker}'" in line and "it is a file, where a folder is needed" in line
+    # the output guard catches it before any write: the path, what is wrong, what to do
+    assert f"{blocker} is a file, not a folder" in line and "choose another path" in line
 
 
 def test_out_that_is_a_folder_is_one_line_naming_it(signal_file, tmp_path, monkeypatch, capsys):
@@ -72,7 +73,7 @@ def test_out_that_is_a_folder_is_one_line_naming_it(signal_file, tmp_path, monke
     status, _, err = run_main(monkeypatch, capsys, *args)
     assert status == 2
     line = one_error_line(err)
-    assert "'taken.csv'" in line and "EISDIR" in line and "give a file path" in line
+    assert "--out taken.csv is a folder" in line and "give a file path" in line
 
 
 @pytest.mark.parametrize(
