@@ -4,6 +4,18 @@ Standardisation is fitted on the training windows only and applied to both
 sides; the estimator is built fresh from its spec with the run's seed. A
 classifier that raises is recorded as ``status="error"`` with its message, so
 one broken plugin never stops a sweep.
+
+Two rules keep a stored result right (SPEC section 9):
+
+- Every fit and predict runs with one BLAS/OpenMP thread, whichever process
+  runs it (``--jobs 1`` in the main process, loky workers, Dask workers).
+  Thread count changes the floating-point summation order inside BLAS, and
+  the MLP's training amplifies that into different predictions; with the
+  limit, results depend only on (data, configuration, seed). Parallelism comes
+  from running runs side by side (``--jobs``), not from threads inside a fit.
+- A SIGINT during a fit always ends the run with ``KeyboardInterrupt``, even
+  when the estimator catches it (scikit-learn's MLP does, and would return a
+  half-trained model): an interrupted fit never becomes a result.
 """
 
 from __future__ import annotations
@@ -17,8 +29,10 @@ import numpy as np
 from sklearn.exceptions import ConvergenceWarning
 from sklearn.metrics import confusion_matrix, f1_score, precision_recall_fscore_support
 from sklearn.preprocessing import StandardScaler
+from threadpoolctl import threadpool_limits
 
 from ..specs import ClassifierSpec
+from .interrupt import no_swallowed_interrupt
 
 __all__ = ["RunResult", "RunTask", "fit_predict", "recording_counts", "run_classifier"]
 
@@ -78,14 +92,21 @@ class RunResult:
 def fit_predict(
     spec: ClassifierSpec, seed: int, x_train: np.ndarray, y_train: np.ndarray, x_test: np.ndarray
 ) -> tuple[np.ndarray, StandardScaler]:
-    """Standardise on the training set only, fit, and predict the test set."""
+    """Standardise on the training set only, fit, and predict the test set.
+
+    Runs with one BLAS/OpenMP thread and raises ``KeyboardInterrupt`` if a
+    SIGINT arrived during the fit, even one the estimator swallowed.
+    """
     scaler = StandardScaler().fit(x_train)
+    # Built first: building imports the estimator's module, and the thread
+    # limit below reaches only the native libraries loaded when it starts.
     estimator = spec.build(seed=seed)
-    with warnings.catch_warnings():
+    with threadpool_limits(limits=1), no_swallowed_interrupt(), warnings.catch_warnings():
         # A capped iteration count is part of the paper's protocol, not a user error.
         warnings.simplefilter("ignore", ConvergenceWarning)
         estimator.fit(scaler.transform(x_train), y_train)
-    return np.asarray(estimator.predict(scaler.transform(x_test))).astype(int), scaler
+        predicted = np.asarray(estimator.predict(scaler.transform(x_test))).astype(int)
+    return predicted, scaler
 
 
 def recording_counts(

@@ -3,7 +3,12 @@
 Both engines expose the same ``map_unordered(fn, items)`` so the orchestrator
 has one code path; results stream back as they finish, which drives the
 progress bar. Local workers are limited to one BLAS/OpenMP thread each so
-``--jobs`` processes do not oversubscribe the cores.
+``--jobs`` processes do not oversubscribe the cores (each fit also limits
+itself, see :mod:`~sdt_framework.bench.classify`, so results never depend on
+the engine).
+
+A Dask scheduler address is checked before connecting: a malformed one, or
+one that cannot be reached, is one clear error, never a traceback.
 """
 
 from __future__ import annotations
@@ -16,7 +21,13 @@ from joblib import Parallel, delayed, parallel_config
 
 from ..errors import SDTError
 
-__all__ = ["DaskExecutor", "Executor", "LocalExecutor", "open_executor"]
+__all__ = [
+    "DaskExecutor",
+    "Executor",
+    "LocalExecutor",
+    "check_scheduler_address",
+    "open_executor",
+]
 
 
 class Executor(Protocol):
@@ -58,6 +69,32 @@ class DaskExecutor:
             yield future.result()
 
 
+_NETWORK_SCHEMES = ("tcp", "tls", "ws", "wss")
+
+
+def check_scheduler_address(address: str) -> None:
+    """Refuse a Dask scheduler address that cannot name a scheduler, with one line."""
+    from distributed.comm import parse_address
+    from distributed.comm.addressing import get_address_host_port
+    from distributed.comm.registry import backends
+
+    example = "e.g. tcp://192.168.1.10:8786"
+    try:
+        scheme, _ = parse_address(address)
+        if scheme not in backends:
+            known = ", ".join(sorted(backends))
+            raise ValueError(f"unknown scheme {scheme[:12]!r}; known: {known}")
+        if scheme in _NETWORK_SCHEMES:
+            host, port = get_address_host_port(address)
+            if not host or not 0 < port < 65536:
+                raise ValueError("a host and a port between 1 and 65535 are needed")
+    except (ValueError, TypeError) as exc:
+        reason = str(exc).replace("\n", " ")[:120]
+        raise SDTError(
+            f"--scheduler {address!r} is not a Dask scheduler address ({reason}); {example}"
+        ) from None
+
+
 @contextlib.contextmanager
 def open_executor(backend: str, jobs: int, scheduler: str | None) -> Iterator[Executor]:
     """The executor for ``backend``; for Dask, connect to ``scheduler`` or start a local one."""
@@ -67,11 +104,13 @@ def open_executor(backend: str, jobs: int, scheduler: str | None) -> Iterator[Ex
     from distributed import Client, LocalCluster
 
     if scheduler:
+        check_scheduler_address(scheduler)
         try:
             client = Client(scheduler, timeout="10s")
-        except OSError as exc:
+        except (OSError, ValueError, TypeError) as exc:
+            reason = str(exc).replace("\n", " ")[:160]
             raise SDTError(
-                f"cannot reach the Dask scheduler at {scheduler!r} ({exc}); start one with "
+                f"cannot reach the Dask scheduler at {scheduler!r} ({reason}); start one with "
                 f"`dask scheduler` or leave --scheduler out for a local cluster"
             ) from None
         with client:

@@ -11,7 +11,10 @@ repetitions.
 Feature blocks are cached on disk keyed by the dataset, the recording (and
 its file's size and modification time), the sensor's and the feature set's
 content hashes, the windowing and the noise seed, so adding a classifier to a
-finished benchmark recomputes no features. A failure is never cached.
+finished benchmark recomputes no features. A failure is never cached. A
+corrupt entry (truncated, not an archive, wrong arrays) is discarded and
+recomputed, and named in a note the orchestrator shows as a warning (workers
+cannot print reliably: on Dask their output goes to the worker's log).
 """
 
 from __future__ import annotations
@@ -19,19 +22,20 @@ from __future__ import annotations
 import hashlib
 import json
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
 from ..chain import degrade
+from ..data.cache import CORRUPT_ENTRY_ERRORS
 from ..data.recording import Recording
 from ..features import extract
 from ..io import atomic_path
 from ..seeding import derive_seed
 from ..specs import FeatureSetSpec, SensorSpec
 
-__all__ = ["FeatureBlock", "FeatureJob", "featurize_recording", "noise_seed"]
+__all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurize_recording", "noise_seed"]
 
 CACHE_VERSION = "1"
 
@@ -47,6 +51,14 @@ class FeatureBlock:
     acquisition: np.ndarray
     window: np.ndarray
     source: str  # computed | cached (read from disk) | shared (deterministic chain)
+
+
+@dataclass
+class RecordingFeatures:
+    """What featurising one recording produced: its blocks, and notes for the user."""
+
+    blocks: list[FeatureBlock] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -118,10 +130,28 @@ def _compute(job: FeatureJob, data: np.ndarray, sensor: SensorSpec, chain_seed: 
     return table.values, table.acquisition, table.window
 
 
-def featurize_recording(job: FeatureJob) -> list[FeatureBlock]:
+def _read_cached(path: Path, n_features: int) -> tuple[np.ndarray, ...]:
+    """The arrays of one cache entry, checked; raises ValueError if they do not fit together."""
+    with np.load(path, allow_pickle=False) as stored:
+        arrays = (stored["values"], stored["acquisition"], stored["window"])
+    values, acquisition, window = arrays
+    if (
+        values.ndim != 2
+        or values.shape[1] != n_features
+        or values.dtype != np.float32
+        or acquisition.shape != (len(values),)
+        or window.shape != (len(values),)
+    ):
+        raise ValueError("arrays of the wrong shape")
+    return arrays
+
+
+def featurize_recording(job: FeatureJob) -> RecordingFeatures:
     """Features of one recording for every (sensor, repetition) of the job."""
     data: np.ndarray | None = None
-    blocks: list[FeatureBlock] = []
+    out = RecordingFeatures()
+    blocks = out.blocks
+    n_features = len(job.feature_set.feature_names)
     for named in job.sensors:
         sensor = named.for_axis(job.axis)  # a part's per-axis figures; the name stays
         done: dict[int | None, FeatureBlock] = {}
@@ -132,11 +162,18 @@ def featurize_recording(job: FeatureJob) -> list[FeatureBlock]:
                 continue
             key = _key(job, sensor, chain_seed)
             path = _cache_path(job, key)
+            arrays = None
             if path is not None and path.exists():
-                with np.load(path) as stored:
-                    arrays = (stored["values"], stored["acquisition"], stored["window"])
-                source = "cached"
-            else:
+                try:
+                    arrays = _read_cached(path, n_features)
+                    source = "cached"
+                except CORRUPT_ENTRY_ERRORS as exc:
+                    out.notes.append(
+                        f"corrupt feature-cache entry {path} ({type(exc).__name__}) "
+                        f"discarded; recomputing it"
+                    )
+                    path.unlink(missing_ok=True)
+            if arrays is None:
                 if data is None:
                     data = job.recording.load()
                 arrays = _compute(job, data, sensor, chain_seed)
@@ -147,7 +184,7 @@ def featurize_recording(job: FeatureJob) -> list[FeatureBlock]:
             block = FeatureBlock(job.recording.recording_id, sensor.name, repeat, *arrays, source)
             done[chain_seed] = block
             blocks.append(block)
-    return blocks
+    return out
 
 
 def _with_repeat(block: FeatureBlock, repeat: int) -> FeatureBlock:

@@ -25,24 +25,11 @@ import pandas as pd
 
 from ..io import atomic_write_text
 from .config import write_config
+from .folder import OUTPUT_FILES
 from .results import per_recording, table4_markdown, tidy, write_frame
 from .runner import BenchmarkResult
 
 __all__ = ["OUTPUT_FILES", "software_versions", "write_outputs"]
-
-OUTPUT_FILES = (
-    "results.parquet",
-    "results.csv",
-    "per_class.parquet",
-    "confusion.parquet",
-    "per_recording.parquet",
-    "allocation.csv",
-    "skipped.csv",
-    "features.parquet",
-    "config.toml",
-    "table4.md",
-    "summary.json",
-)
 
 _PACKAGES = (
     "sdt-framework",

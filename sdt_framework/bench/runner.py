@@ -5,6 +5,13 @@ For each machine x scenario x sensor x classifier x repetition (SPEC section
 the training runs only, fit, predict and score. :func:`run_benchmark` executes
 a :class:`~sdt_framework.bench.plan.Plan` locally or on Dask, resuming from
 the per-run files already in the output folder.
+
+Before any work the scheduler address, the feature cache and the results
+folder are checked (:mod:`~sdt_framework.bench.folder`: a folder is resumed
+only by the configuration that wrote it). A run is stored the moment it
+finishes, atomically; Ctrl-C stops everything with ``KeyboardInterrupt`` and
+what was stored stays valid, so running the same configuration again
+resumes and gives the results an uninterrupted run would have given.
 """
 
 from __future__ import annotations
@@ -12,6 +19,7 @@ from __future__ import annotations
 import hashlib
 import json
 import time
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,17 +29,24 @@ import pandas as pd
 
 from ..data.cache import default_cache_dir
 from ..edge.quantise import quantise_features
-from ..io import atomic_write_text
+from ..io import ensure_writable_dir
 from ..seeding import derive_seed
 from ..specs import ClassifierSpec, SensorSpec
 from .classify import RunResult, RunTask, run_classifier
-from .execute import open_executor
+from .execute import check_scheduler_address, open_executor
 from .featurize import FeatureBlock, FeatureJob, featurize_recording
+from .folder import claim_results_folder
 from .plan import Plan, plan_benchmark
+from .store import load_finished, store_finished
 
 __all__ = ["BenchmarkResult", "Plan", "plan_benchmark", "run_benchmark"]
 
 Progress = Callable[[str, int, int], None]
+Warn = Callable[[str], None]
+
+
+def _warn(message: str) -> None:
+    warnings.warn(message, RuntimeWarning, stacklevel=3)
 
 
 @dataclass
@@ -154,29 +169,38 @@ def _tasks(plan: Plan, features: pd.DataFrame, done: set[str]):
                 )
 
 
-def _load_done(runs_dir: Path) -> dict[str, RunResult]:
-    done = {}
-    for path in sorted(runs_dir.glob("*.json")):
-        data = json.loads(path.read_text())
-        if data.get("status") == "ok":
-            done[data["key"]] = RunResult(**data)
-    return done
-
-
 def run_benchmark(
-    plan: Plan, out_dir: str | Path, progress: Progress | None = None
+    plan: Plan,
+    out_dir: str | Path,
+    progress: Progress | None = None,
+    warn: Warn | None = None,
 ) -> BenchmarkResult:
     """Execute ``plan``, writing one file per finished run under ``out_dir/runs``.
 
     Runs already finished in ``out_dir`` (same key) are not redone; failed runs
-    are never stored, so a resume retries them.
+    are never stored, so a resume retries them. ``warn`` receives one line per
+    problem that does not stop the run (a corrupt cache entry, a damaged run
+    file); by default it issues a ``RuntimeWarning``.
+
+    Raises
+    ------
+    SDTError
+        Before any work: a malformed scheduler address, a cache or results
+        folder that cannot be written, or a results folder that must not be.
+    KeyboardInterrupt
+        On Ctrl-C; nothing of an unfinished run is stored.
     """
     config = plan.config
     out_dir = Path(out_dir)
-    runs_dir = out_dir / "runs"
-    runs_dir.mkdir(parents=True, exist_ok=True)
     report = progress or (lambda stage, done, total: None)
-    cache_dir = config.cache_dir or str(default_cache_dir())
+    warn = warn or _warn
+    if config.backend == "dask" and config.scheduler:
+        check_scheduler_address(config.scheduler)
+    cache_dir = ensure_writable_dir(
+        config.cache_dir or default_cache_dir(), "feature cache", "--cache-dir or SDT_CACHE_DIR"
+    )
+    claim_results_folder(out_dir, config)
+    runs_dir = ensure_writable_dir(out_dir / "runs", "results folder", "--out")
     jobs = [
         FeatureJob(
             r,
@@ -187,7 +211,7 @@ def run_benchmark(
             config.seed,
             config.window_s,
             config.settle_s,
-            cache_dir,
+            str(cache_dir),
             config.axes.get(r.channel, "x"),
         )
         for r in plan.recordings
@@ -198,20 +222,22 @@ def run_benchmark(
         blocks: list[FeatureBlock] = []
         report("features", 0, len(jobs))
         for i, result in enumerate(executor.map_unordered(featurize_recording, jobs), 1):
-            blocks.extend(result)
+            blocks.extend(result.blocks)
+            for note in result.notes:
+                warn(note)
             report("features", i, len(jobs))
         seconds["features"] = time.perf_counter() - start
         features = _feature_frame(plan, blocks)
 
         start = time.perf_counter()
-        previous = _load_done(runs_dir)
+        previous = load_finished(runs_dir, warn)
         planned = list(_tasks(plan, features, set(previous)))
         todo = [task for _, task in planned if task is not None]
         finished = {key: previous[key] for key, task in planned if task is None}
         report("runs", len(finished), len(planned))
         for result in executor.map_unordered(run_classifier, todo):
             if result.status == "ok":
-                atomic_write_text(runs_dir / f"{result.key}.json", json.dumps(result.as_dict()))
+                store_finished(runs_dir, result)
             finished[result.key] = result
             report("runs", len(finished), len(planned))
         seconds["classify"] = time.perf_counter() - start

@@ -4,30 +4,70 @@ Parsing a 100 MB NLN-EMP CSV takes a fraction of a second with pyarrow but
 the archive is ~80 GB; a second pass (another scenario, another sensor) should
 not parse again. Parsed arrays are stored as ``.npy`` files; the key changes
 when the source file is modified (size or mtime), so a stale entry is never
-used. Writes are atomic, and failures are never cached.
+used. Writes are atomic, and failures are never cached. A corrupt entry
+(truncated, foreign) is named in a warning, discarded and recomputed.
 """
 
 from __future__ import annotations
 
 import hashlib
 import os
+import warnings
+import zipfile
 from collections.abc import Callable, Mapping
 from pathlib import Path
 
 import numpy as np
 
+from ..errors import SDTError
 from ..io import atomic_path
 
-__all__ = ["ENV_CACHE_DIR", "ArrayCache", "default_cache_dir"]
+__all__ = ["CORRUPT_ENTRY_ERRORS", "ENV_CACHE_DIR", "ArrayCache", "default_cache_dir"]
 
 ENV_CACHE_DIR = "SDT_CACHE_DIR"
 
+#: What reading a damaged .npy/.npz raises (truncated, not a zip, pickled, unreadable).
+CORRUPT_ENTRY_ERRORS = (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile)
+
 
 def default_cache_dir(environ: Mapping[str, str] | None = None) -> Path:
-    """``$SDT_CACHE_DIR`` if set, else ``~/.cache/sdt-framework``."""
+    """``$SDT_CACHE_DIR`` if set, else ``$HOME/.cache/sdt-framework``.
+
+    Raises
+    ------
+    SDTError
+        When neither is usable: HOME unset or empty (and no home folder in the
+        user database) or naming a folder that does not exist. Nothing is
+        created in an unintended place (an empty HOME would otherwise mean ``/``).
+    """
     environ = os.environ if environ is None else environ
     value = environ.get(ENV_CACHE_DIR)
-    return Path(value).expanduser() if value else Path.home() / ".cache" / "sdt-framework"
+    if value:
+        return Path(value).expanduser()
+    hint = f"set {ENV_CACHE_DIR} (or --cache-dir) to a writable folder"
+    home = environ.get("HOME")
+    if home is None:
+        home = _user_database_home()
+    if not home:
+        raise SDTError(f"cannot find your home folder (HOME is not set) for the cache; {hint}")
+    if not Path(home).is_dir():
+        raise SDTError(f"HOME is {home!r}, which is not a folder, so there is no cache; {hint}")
+    return Path(home) / ".cache" / "sdt-framework"
+
+
+def _user_database_home() -> str | None:
+    """The home folder of this user in the system's user database, if any."""
+    try:
+        import pwd
+    except ImportError:  # not POSIX: Path.home() knows the platform's rule
+        try:
+            return str(Path.home())
+        except RuntimeError:
+            return None
+    try:
+        return pwd.getpwuid(os.getuid()).pw_dir
+    except KeyError:  # e.g. a container started with an arbitrary uid
+        return None
 
 
 class ArrayCache:
@@ -44,8 +84,11 @@ class ArrayCache:
     VERSION = "1"
 
     def __init__(self, root: str | os.PathLike[str] | None = None, *, enabled: bool = True) -> None:
-        self.root = Path(root).expanduser() if root is not None else default_cache_dir()
         self.enabled = enabled
+        if root is not None:
+            self.root = Path(root).expanduser()
+        else:  # a disabled cache needs no folder (and no HOME)
+            self.root = default_cache_dir() if enabled else Path()
 
     def key(self, source: str | os.PathLike[str], variant: str = "") -> str:
         """Hex key of a source file in its current state (path, size, mtime)."""
@@ -67,8 +110,8 @@ class ArrayCache:
     ) -> np.ndarray:
         """The cached array of ``source``, or ``compute()`` stored for next time.
 
-        A corrupt cache entry is recomputed; an exception from ``compute``
-        propagates and nothing is written.
+        A corrupt cache entry is named in a warning, removed and recomputed;
+        an exception from ``compute`` propagates and nothing is written.
         """
         if not self.enabled:
             return compute()
@@ -76,7 +119,12 @@ class ArrayCache:
         if target.exists():
             try:
                 return np.load(target, allow_pickle=False)
-            except (OSError, ValueError):
+            except CORRUPT_ENTRY_ERRORS as exc:
+                warnings.warn(
+                    f"corrupt cache entry {target} ({type(exc).__name__}) discarded; recomputing",
+                    RuntimeWarning,
+                    stacklevel=2,
+                )
                 target.unlink(missing_ok=True)
         data = compute()
         try:
