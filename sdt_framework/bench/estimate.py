@@ -1,59 +1,132 @@
-"""How long a planned benchmark will take, before it starts: a rough, documented estimate.
+"""How big a planned benchmark is and roughly how long it will take, before any work.
 
-seconds = (chain_seconds + classify_seconds) / processes, with
+The estimate is deliberately simple (and printed as an estimate):
 
-- chain_seconds = input samples x sensor-repetitions x CHAIN_SECONDS_PER_SAMPLE, where
-  a sensor that injects no noise counts once (it is shared by all repetitions);
-- classify_seconds = sum over runs of FIT_SECONDS_PER_1K_WINDOWS[classifier] x
-  training windows / 1000 (unknown classifiers: the slowest known rate).
+- features: ``FEATURE_SECONDS_PER_MSAMPLE`` per million input samples run
+  through one chain draw. A recording costs its samples (acquisitions x
+  samples per acquisition) once per sensor and repetition, or once per sensor
+  for a chain without noise (computed once, shared by all repetitions);
+- classifiers: ``a + b * n_train`` seconds per run, with ``(a, b)`` per
+  classifier in :data:`RUN_SECONDS` and ``n_train`` the run's training
+  windows; a classifier not in the table (a plugin) is costed as the slowest
+  built-in;
+- the sum is divided by the processes that can run at once,
+  ``min(--jobs, CPU cores)``; runs already stored in the results folder are
+  not counted.
 
-The constants were measured on the reference machine (2 vCPUs, shared with
-other work at the time, so they err on the long side) from one
-``sdt benchmark --quick`` run: the median ``fit_seconds`` per classifier over
-its 300 training windows, and the featurisation time in summary.json (16.5 s
-on 2 processes for 20.8 M input samples x 5 sensor-repetitions; the synthetic
-generator's own time included). On a quiet machine the estimate errs long by up to
-about four times (the full default protocol: 860 s estimated, 218 s measured):
-enough to tell minutes from hours, which is what it is for. Runs already stored in the output folder
-are not subtracted: the estimate is for a run from scratch.
+The constants are single-thread CPU times measured on the reference machine
+(2 vCPU AMD EPYC, Python 3.11, scikit-learn 1.9, xgboost 3.2) by
+``python benchmarks/bench_estimate.py``, which also prints how far the
+estimate of the ``--quick`` benchmark is from its measured time. Feature-cache
+hits are not subtracted, so the estimate errs on the long side.
 """
 
 from __future__ import annotations
 
+import os
+from dataclasses import dataclass
+
+from ..data.recording import Recording
+from ..features import samples_for
+from ..specs import SensorSpec
 from .plan import Plan
 
-__all__ = ["CHAIN_SECONDS_PER_SAMPLE", "FIT_SECONDS_PER_1K_WINDOWS", "estimate_seconds"]
+__all__ = [
+    "CONFIRM_ABOVE_SECONDS",
+    "FEATURE_SECONDS_PER_MSAMPLE",
+    "RUN_SECONDS",
+    "Estimate",
+    "estimate",
+]
 
-#: SDT chain + feature extraction, per input sample and sensor-repetition
-CHAIN_SECONDS_PER_SAMPLE = 3.2e-7
-#: classifier fit + predict per 1000 training windows (paper hyperparameters)
-FIT_SECONDS_PER_1K_WINDOWS = {"lr": 0.22, "knn": 0.05, "rf": 2.8, "xgb": 2.2, "mlp": 2.8}
+#: A benchmark estimated to take longer than this needs ``--yes`` to start.
+CONFIRM_ABOVE_SECONDS = 3600.0
+#: Chain + features, seconds per million input samples per draw (one thread).
+FEATURE_SECONDS_PER_MSAMPLE = 0.047
+#: classifier -> (seconds per run, seconds per training window), one thread.
+RUN_SECONDS: dict[str, tuple[float, float]] = {
+    "lr": (0.02, 0.00003),
+    "knn": (0.02, 0.0),
+    "rf": (0.17, 0.00015),
+    "xgb": (0.03, 0.0006),
+    "mlp": (0.07, 0.0005),
+}
 
 
-def estimate_seconds(plan: Plan) -> tuple[float, int]:
-    """(estimated wall seconds, number of classifier runs) of ``plan`` from scratch."""
+@dataclass(frozen=True)
+class Estimate:
+    """Size and estimated duration of a benchmark."""
+
+    runs: int
+    runs_to_do: int
+    feature_draws: int
+    seconds: float
+    workers: int
+
+    def line(self) -> str:
+        """One line for the terminal: size and estimated time."""
+        todo = "" if self.runs_to_do == self.runs else f" ({self.runs_to_do} still to do)"
+        return (
+            f"{self.runs} runs{todo} and {self.feature_draws} featurised signals, "
+            f"estimated {format_duration(self.seconds)} on {self.workers} process"
+            f"{'es' if self.workers > 1 else ''}"
+        )
+
+
+def format_duration(seconds: float) -> str:
+    """``42 s``, ``12 min``, ``3.4 h`` or ``2.1 days``."""
+    if seconds < 90:
+        return f"{seconds:.0f} s"
+    if seconds < 5400:
+        return f"{seconds / 60:.0f} min"
+    if seconds < 2 * 86400:
+        return f"{seconds / 3600:.1f} h"
+    return f"{seconds / 86400:.1f} days"
+
+
+def _windows(recording: Recording, sensor: SensorSpec, window_s: float, settle_s: float) -> int:
+    rate = sensor.sampling_rate_hz
+    ratio = rate / recording.sampling_rate_hz
+    samples = int((recording.samples_per_acquisition - 1) * ratio) + 1
+    usable = samples - samples_for(settle_s, rate)
+    return recording.n_acquisitions * max(0, usable // samples_for(window_s, rate))
+
+
+def _draws(sensor: SensorSpec, repeats: int) -> int:
+    noisy = sensor.inject_noise and sensor.noise_density_ug_rthz != 0
+    return repeats if noisy else 1
+
+
+def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
+    """Size and estimated wall time of ``plan``; ``stored_runs`` are already done."""
     config = plan.config
-    repeats = config.repeats
-    draws = sum(
-        repeats if s.inject_noise and s.noise_density_ug_rthz > 0 else 1 for s in plan.sensors
-    )
-    samples = sum(r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings)
-    chain = samples * draws * CHAIN_SECONDS_PER_SAMPLE
-
-    windows: dict[tuple[str, str], int] = {}  # (machine, run) -> windows of one sensor
-    for rec in plan.recordings:
-        seconds = rec.samples_per_acquisition / rec.sampling_rate_hz
-        per = rec.n_acquisitions * max(0, int((seconds - config.settle_s) / config.window_s))
-        windows[(rec.machine, rec.run)] = windows.get((rec.machine, rec.run), 0) + per
-    slowest = max(FIT_SECONDS_PER_1K_WINDOWS.values())
-    fit_rate = sum(FIT_SECONDS_PER_1K_WINDOWS.get(c.name, slowest) for c in plan.classifiers)
-    classify, runs = 0.0, 0
-    groups = plan.allocation.groupby(["machine", "scenario"], sort=True)
-    for (machine, scenario), part in groups:
+    feature_seconds = 0.0
+    draws = 0
+    for recording in plan.recordings:
+        samples = recording.n_acquisitions * recording.samples_per_acquisition
+        for sensor in plan.sensors:
+            n = _draws(sensor, config.repeats)
+            draws += n
+            feature_seconds += n * samples / 1e6 * FEATURE_SECONDS_PER_MSAMPLE
+    slowest = max(RUN_SECONDS.values(), key=lambda ab: ab[0] + 1000 * ab[1])
+    by_run = {(r.machine, r.run): [] for r in plan.recordings}
+    for recording in plan.recordings:
+        by_run[(recording.machine, recording.run)].append(recording)
+    run_seconds = 0.0
+    runs = 0
+    for (machine, scenario), part in plan.allocation.groupby(["machine", "scenario"], sort=True):
         if (machine, scenario) in plan.skipped:
             continue
-        train = part[part["side"] == "train"]
-        n_train = sum(windows.get((machine, run), 0) for run in train["run"])
-        classify += fit_rate * n_train / 1000 * len(plan.sensors) * repeats
-        runs += len(plan.classifiers) * len(plan.sensors) * repeats
-    return (chain + classify) / max(1, config.n_jobs()), runs
+        train = part[part["side"] == "train"]["run"]
+        members = [rec for run in train for rec in by_run.get((machine, run), [])]
+        for sensor in plan.sensors:
+            n_train = sum(_windows(r, sensor, config.window_s, config.settle_s) for r in members)
+            for clf in plan.classifiers:
+                a, b = RUN_SECONDS.get(clf.name, slowest)
+                run_seconds += config.repeats * (a + b * n_train)
+                runs += config.repeats
+    to_do = max(0, runs - stored_runs)
+    if runs:
+        run_seconds *= to_do / runs
+    workers = max(1, min(config.n_jobs(), os.cpu_count() or 1))
+    return Estimate(runs, to_do, draws, (feature_seconds + run_seconds) / workers, workers)

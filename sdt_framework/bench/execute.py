@@ -9,11 +9,23 @@ the engine).
 
 A Dask scheduler address is checked before connecting: a malformed one, or
 one that cannot be reached, is one clear error, never a traceback.
+
+Ctrl-C belongs to the main process. A terminal delivers SIGINT to every
+process of the foreground group, workers included; local workers therefore
+ignore it (loky workers from their first task on, the processes of a
+LocalCluster we start from their start-up), so an interrupted worker neither
+returns a half-trained model nor floods the terminal with tracebacks. The
+main process stops consuming results and shuts the pool down. Workers of a
+cluster the user started (``--scheduler``) are left as they are.
 """
 
 from __future__ import annotations
 
 import contextlib
+import logging
+import os
+import signal
+import threading
 from collections.abc import Callable, Iterable, Iterator
 from typing import Any, Protocol
 
@@ -38,6 +50,25 @@ class Executor(Protocol):
         ...
 
 
+class _IgnoringInterrupts:
+    """``fn`` run in a worker process that leaves Ctrl-C to the main process (picklable)."""
+
+    def __init__(self, fn: Callable[[Any], Any]) -> None:
+        self.fn = fn
+        self.main_pid = os.getpid()
+
+    def __call__(self, item: Any) -> Any:
+        if os.getpid() != self.main_pid and threading.current_thread() is threading.main_thread():
+            signal.signal(signal.SIGINT, signal.SIG_IGN)
+        return self.fn(item)
+
+
+def _ignore_sigint_in_worker() -> None:
+    """Run at a local Dask worker's start-up, in its main thread (signals live there)."""
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 class LocalExecutor:
     """joblib processes on this machine (``jobs == 1`` runs in-process)."""
 
@@ -49,9 +80,10 @@ class LocalExecutor:
         if self.jobs == 1 or len(items) <= 1:
             yield from map(fn, items)
             return
+        task = _IgnoringInterrupts(fn)
         with parallel_config(backend="loky", inner_max_num_threads=1):
             yield from Parallel(n_jobs=self.jobs, return_as="generator_unordered")(
-                delayed(fn)(item) for item in items
+                delayed(task)(item) for item in items
             )
 
 
@@ -117,7 +149,13 @@ def open_executor(backend: str, jobs: int, scheduler: str | None) -> Iterator[Ex
             yield DaskExecutor(client)
         return
     with (
-        LocalCluster(n_workers=jobs, threads_per_worker=1, dashboard_address=None) as cluster,
+        LocalCluster(
+            n_workers=jobs,
+            threads_per_worker=1,
+            dashboard_address=None,
+            silence_logs=logging.ERROR,  # shutting down after Ctrl-C is not worth a warning
+        ) as cluster,
         Client(cluster) as client,
     ):
+        client.run(_ignore_sigint_in_worker)
         yield DaskExecutor(client)

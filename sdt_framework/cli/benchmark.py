@@ -1,16 +1,77 @@
-"""``sdt benchmark``: the main job — every sensor x classifier x scenario, repeated."""
+"""``sdt benchmark``: the main job — every sensor x classifier x scenario, repeated.
+
+Exit status: 0 when every classifier produced results; 1 when some classifier
+failed in every one of its runs (results are still written, a summary line
+names it and its first error); 2 for a user error (one line, nothing run);
+130 after Ctrl-C, with one line giving the exact command that resumes.
+"""
 
 from __future__ import annotations
 
 import datetime as dt
+import shlex
 from pathlib import Path
 from typing import Any
 
 import typer
 from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 from rich.table import Table
+from rich.text import Text
 
+from ..errors import SDTError
 from .common import console, err_console, registry
+
+EXIT_CLASSIFIER_FAILED = 1
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a process ended by Ctrl-C
+
+
+def _say(label: str, style: str, message: str) -> None:
+    """One line on stderr; ``message`` is printed as given, never read as markup."""
+    err_console.print(Text.assemble((label, style), " ", message), highlight=False, soft_wrap=True)
+
+
+def _resume_command(ctx: typer.Context, out_dir: Path, yes: bool) -> str:
+    """The exact command that resumes the benchmark in ``out_dir`` (from its config.toml)."""
+    root = ctx.find_root()
+    files = (root.obj or {}).get("sensor_files", [])
+    command = ["sdt", *[a for f in files for a in ("--sensor-file", str(f))], "benchmark"]
+    command += [str(out_dir / "config.toml"), "--out", str(out_dir)]
+    return shlex.join(command + (["--yes"] if yes else []))
+
+
+def _interrupted(ctx: typer.Context, out_dir: Path, yes: bool) -> typer.Exit:
+    from ..bench.folder import MARKER
+
+    if (out_dir / MARKER).is_file() and (out_dir / "config.toml").is_file():
+        stored = len(list((out_dir / "runs").glob("*.json")))
+        _say(
+            "interrupted:",
+            "yellow",
+            f"{stored} finished runs are stored in {out_dir}; resume with: "
+            f"{_resume_command(ctx, out_dir, yes)}",
+        )
+    else:
+        _say("interrupted:", "yellow", "before anything was written; run the same command again")
+    return typer.Exit(EXIT_INTERRUPTED)
+
+
+def _failures(results: Any) -> bool:
+    """Print one line per classifier with failed runs; True if one failed in all of them."""
+    any_total = False
+    for name, part in results.groupby("classifier", sort=True):
+        failed = part[part["status"] == "error"]
+        if failed.empty:
+            continue
+        first = " ".join(str(failed["error"].iloc[0]).split())[:200]
+        whole = len(failed) == len(part)
+        any_total |= whole
+        _say(
+            "error:" if whole else "warning:",
+            "bold red" if whole else "yellow",
+            f"classifier {name!r} failed in {'all ' if whole else ''}{len(failed)} of "
+            f"{len(part)} runs (first error: {first})",
+        )
+    return any_total
 
 
 def _names(value: str | None) -> list[str] | None:
@@ -100,12 +161,17 @@ def benchmark(
         help="Small preset: 2 repeats; 4 s synthetic acquisitions or 5 per NLN-EMP run.",
     ),
     no_report: bool = typer.Option(False, "--no-report", help="Skip report.md/report.html."),
+    yes: bool = typer.Option(
+        False, "--yes", help="Start even if the estimated time is over an hour."
+    ),
 ) -> None:
     """Benchmark sensors x classifiers x scenarios and write tidy results and Table 4.
 
     With no data it runs on the embedded synthetic-pump dataset. Every name
     resolves through the plugin registry, so installed sensor plugins and
-    --sensor-file profiles join by name.
+    --sensor-file profiles join by name. Re-using --out resumes a run of the
+    same configuration; Ctrl-C stops it and prints the command that resumes.
+    A benchmark estimated at over an hour needs --yes.
 
     Example:
 
@@ -119,8 +185,7 @@ def benchmark(
     """
     # Imported here so that `sdt --help` and the listing commands start fast.
     from ..bench.config import load_config
-    from ..bench.output import write_outputs
-    from ..bench.runner import plan_benchmark, run_benchmark
+    from ..bench.interrupt import watch_interrupts
 
     given: dict[str, Any] = {
         "data": data,
@@ -145,9 +210,34 @@ def benchmark(
         overrides["quick"] = True
     if no_report:
         overrides["report"] = False
-    config = load_config(config_file, overrides)
-    plan = plan_benchmark(config, registry(ctx))
     out_dir = out or Path("results") / dt.datetime.now().strftime("%Y%m%d-%H%M%S")
+    with watch_interrupts() as watch:
+        try:
+            config = load_config(config_file, overrides)
+            failed = _run(ctx, config, out_dir, yes)
+        except KeyboardInterrupt:
+            raise _interrupted(ctx, out_dir, yes) from None
+        except Exception:
+            if not watch.seen:  # e.g. a worker pool broken by the same Ctrl-C
+                raise
+            raise _interrupted(ctx, out_dir, yes) from None
+    if failed:
+        raise typer.Exit(EXIT_CLASSIFIER_FAILED)
+
+
+def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool) -> bool:
+    """Plan, check the size, run, write; True if some classifier failed in all its runs."""
+    from ..bench.estimate import CONFIRM_ABOVE_SECONDS, estimate
+    from ..bench.output import write_outputs
+    from ..bench.runner import plan_benchmark, run_benchmark
+
+    plan = plan_benchmark(config, registry(ctx))
+    size = estimate(plan, stored_runs=len(list((out_dir / "runs").glob("*.json"))))
+    if size.seconds > CONFIRM_ABOVE_SECONDS and not yes:
+        raise SDTError(
+            f"this benchmark is {size.line()}; add --yes to start it, "
+            f"or lower --repeats or select fewer sensors, classifiers or machines"
+        )
     for name, reason in plan.skipped_sensors.items():
         err_console.print(f"skipped sensor {name}: {reason}")
     for (machine, scenario), reason in sorted(plan.skipped.items()):
@@ -159,6 +249,8 @@ def benchmark(
         highlight=False,
         soft_wrap=True,
     )
+    if size.seconds > CONFIRM_ABOVE_SECONDS:
+        _say("note:", "yellow", f"this benchmark is {size.line()}")
     columns = (
         TextColumn("{task.description:>9}"),
         BarColumn(),
@@ -173,7 +265,10 @@ def benchmark(
                 tasks[stage] = bar.add_task(stage, total=total)
             bar.update(tasks[stage], completed=done, total=total)
 
-        result = run_benchmark(plan, out_dir, progress)
+        def warn(message: str) -> None:
+            _say("warning:", "yellow", message)
+
+        result = run_benchmark(plan, out_dir, progress, warn)
     results = write_outputs(result, out_dir)
     _print_table4(results, [s.name for s in plan.sensors])
     if config.report:
@@ -187,3 +282,4 @@ def benchmark(
         highlight=False,
         soft_wrap=True,
     )
+    return _failures(results)
