@@ -1,0 +1,75 @@
+"""Shared fixtures of the reliability tests: a small benchmark, a folder nobody may write,
+and ``sdt`` run as a user runs it (a real process: exit status and stderr as printed)."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from sdt_framework import build_registry
+from sdt_framework.bench.config import BenchmarkConfig
+
+#: Motor-2 only (15 runs), 1.5 s acquisitions (2 windows per channel), 2 channels, 1 sensor.
+SMALL: dict[str, Any] = {
+    "dataset_options": {"duration": 1.5},
+    "machines": ["Motor-2"],
+    "channels": ["ch1", "ch4"],
+    "sensors": ["adxl345"],
+    "classifiers": ["lr", "knn"],
+    "repeats": 2,
+    "jobs": 1,
+    "report": False,
+}
+
+
+@pytest.fixture
+def small_config(tmp_path):
+    """Factory for a small config with its own feature cache."""
+
+    def make(**changes: Any) -> BenchmarkConfig:
+        return BenchmarkConfig(**{**SMALL, "cache_dir": str(tmp_path / "cache"), **changes})
+
+    return make
+
+
+@pytest.fixture(scope="session")
+def registry():
+    """The installed registry (built-in plugins)."""
+    return build_registry()
+
+
+@pytest.fixture
+def read_only_dir(tmp_path) -> Path:
+    """A folder this process cannot write into.
+
+    Mode 0o555 stops an ordinary user; root ignores file modes, so for root
+    the folder is one in sysfs, which nobody can create files in.
+    """
+    if os.geteuid() == 0:
+        return Path("/sys/kernel")
+    folder = tmp_path / "read-only"
+    folder.mkdir()
+    folder.chmod(0o555)
+    return folder
+
+
+@pytest.fixture
+def sdt(tmp_path):
+    """``sdt(*args, env=...)``: run the real command; the cache goes to the test's folder."""
+
+    def run(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
+        environ = {**os.environ, "SDT_CACHE_DIR": str(tmp_path / "cache"), **(env or {})}
+        return subprocess.run(
+            [sys.executable, "-m", "sdt_framework", *args],
+            capture_output=True,
+            text=True,
+            env=environ,
+            check=False,
+        )
+
+    return run

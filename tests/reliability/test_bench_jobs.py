@@ -1,0 +1,96 @@
+"""Results depend only on (data, configuration, seed): never on --jobs or the backend.
+
+The cause of the old difference: a fit in the main process (``--jobs 1``) ran
+with as many BLAS threads as cores, a fit in a loky or Dask worker with one;
+the BLAS summation order changes with the thread count and the MLP's training
+amplifies the last-bit differences into other predictions.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from distributed import LocalCluster
+from threadpoolctl import threadpool_limits
+
+from sdt_framework import build_registry
+from sdt_framework.bench.classify import fit_predict
+from sdt_framework.bench.results import tidy
+from sdt_framework.bench.runner import plan_benchmark, run_benchmark
+
+#: A classifier that reports the BLAS threads its fit saw: it predicts class 0 with
+#: one thread and class 1 with more, so Macro F1 differs if the thread count does.
+PROBE = """
+import numpy as np
+from threadpoolctl import threadpool_info
+
+from sdt_framework import ClassifierSpec, hookimpl
+
+
+class ThreadProbe:
+    def __init__(self, random_state=None):
+        self.random_state = random_state
+
+    def fit(self, x, y):
+        blas = [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]
+        self.label_ = 0 if max(blas) == 1 else 1
+        return self
+
+    def predict(self, x):
+        return np.full(len(x), self.label_)
+
+
+@hookimpl
+def register_classifiers(register):
+    register(ClassifierSpec(name="thread-probe", estimator="thread_probe:ThreadProbe"))
+"""
+
+EVERY = ["lr", "knn", "rf", "xgb", "mlp", "thread-probe"]
+
+
+def test_mlp_predictions_do_not_depend_on_the_callers_blas_threads(registry):
+    """A real training set (Motor-4 interpolation, reference sensor, repetition 1 of
+    the --quick benchmark) on which the MLP once gave Macro F1 0.63535 in-process
+    and 0.63120 in a worker; with 2 BLAS threads allowed by the caller it predicted
+    8 of 570 test windows differently from a caller allowing 1."""
+    stored = np.load(Path(__file__).parent / "data" / "mlp_threads.npz")
+    arguments = (
+        int(stored["seed"]),
+        stored["x_train"],
+        stored["y_train"].astype(int),
+        stored["x_test"],
+    )
+    predictions = []
+    for threads in (1, 2):
+        with threadpool_limits(limits=threads):
+            predictions.append(fit_predict(registry.classifier("mlp"), *arguments)[0])
+    np.testing.assert_array_equal(predictions[0], predictions[1])
+
+
+def test_jobs_1_jobs_2_and_dask_give_identical_results_for_every_classifier(
+    fake_dist, small_config, tmp_path
+):
+    fake_dist("thread-probe", {"thread-probe": "thread_probe"}, {"thread_probe": PROBE})
+    registry = build_registry()
+
+    def run(name: str, **changes) -> pd.DataFrame:
+        config = small_config(
+            classifiers=EVERY, repeats=1, cache_dir=str(tmp_path / f"cache-{name}"), **changes
+        )
+        result = run_benchmark(plan_benchmark(config, registry), tmp_path / name)
+        return tidy(result.runs)[0].drop(columns="fit_seconds")
+
+    one = run("jobs1", jobs=1)
+    two = run("jobs2", jobs=2)
+    with LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    ) as cluster:
+        dask = run("dask", jobs=2, backend="dask", scheduler=cluster.scheduler_address)
+    # 3 scenarios x 1 sensor x 1 repeat per classifier, every run scored
+    assert (one["status"] == "ok").all() and one.groupby("classifier").size().eq(3).all()
+    assert set(one["classifier"]) == set(EVERY)
+    assert (one[one["classifier"] == "thread-probe"]["macro_f1"] > 0).all()
+    pd.testing.assert_frame_equal(one, two)  # bit-identical, Macro F1 included
+    pd.testing.assert_frame_equal(one, dask)
