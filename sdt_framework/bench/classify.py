@@ -104,6 +104,8 @@ def fit_predict(
     with threadpool_limits(limits=1), no_swallowed_interrupt(), warnings.catch_warnings():
         # A capped iteration count is part of the paper's protocol, not a user error.
         warnings.simplefilter("ignore", ConvergenceWarning)
+        # The MLP's note on a swallowed Ctrl-C: the interrupt is re-raised instead.
+        warnings.filterwarnings("ignore", message="Training interrupted by user")
         estimator.fit(scaler.transform(x_train), y_train)
         predicted = np.asarray(estimator.predict(scaler.transform(x_test))).astype(int)
     return predicted, scaler

@@ -85,29 +85,64 @@ def rule_allocation(runs: Iterable[Run], scenarios: Iterable[str]) -> pd.DataFra
     return frame.sort_values(["machine", "scenario", "condition", "run"], ignore_index=True)
 
 
+_REQUIRED = ("machine", "scenario", "run", "side")
+_TOML_SHAPE = "[[allocation]] tables, each with machine, scenario, run and side as strings"
+
+
+def _toml_entries(path: Path, text: str) -> pd.DataFrame:
+    """The ``[[allocation]]`` entries of a TOML file, checked for shape entry by entry."""
+    entries = tomllib.loads(text).get("allocation")
+    if not isinstance(entries, list) or not entries:
+        found = "missing" if entries is None else f"of type {type(entries).__name__}"
+        found = "an empty list" if entries == [] else found
+        raise SDTError(f"{path}: 'allocation' is {found}; expected {_TOML_SHAPE}")
+    for number, entry in enumerate(entries, 1):
+        if not isinstance(entry, dict):
+            raise SDTError(
+                f"{path}: allocation entry {number} is of type {type(entry).__name__}; "
+                f"expected {_TOML_SHAPE}"
+            )
+        for key in _REQUIRED:
+            if not isinstance(entry.get(key), str):
+                found = "missing" if key not in entry else f"of type {type(entry[key]).__name__}"
+                raise SDTError(
+                    f"{path}: allocation entry {number}: {key!r} is {found}; expected a string"
+                )
+    return pd.DataFrame([{key: entry[key] for key in _REQUIRED} for entry in entries])
+
+
 def load_allocation(path: str | os.PathLike[str], runs: Iterable[Run]) -> pd.DataFrame:
     """Read a user allocation table (CSV, or TOML ``[[allocation]]`` entries).
 
     Required columns: machine, scenario, run, side (train|test). Condition and
-    severity come from the dataset. Every named run must exist.
+    severity come from the dataset. Every named run must exist. A file of the
+    wrong shape, an unreadable path or text that does not parse is one error
+    naming the file (and the entry or row).
     """
     path = Path(path)
+    toml = path.suffix.lower() == ".toml"
     try:
-        if path.suffix.lower() == ".toml":
-            table = pd.DataFrame(tomllib.loads(path.read_text())["allocation"])
+        if toml:
+            table = _toml_entries(path, path.read_text(encoding="utf-8"))
         else:
             table = pd.read_csv(path, dtype=str)
     except FileNotFoundError:
         raise SDTError(f"{path}: allocation file not found") from None
-    except (KeyError, ValueError, tomllib.TOMLDecodeError) as exc:
-        raise SDTError(f"{path}: cannot read the allocation table ({exc})") from None
-    missing = {"machine", "scenario", "run", "side"} - set(table.columns)
+    except OSError as exc:
+        raise SDTError(
+            f"{path}: cannot read the allocation table ({exc.strerror or exc}); "
+            f"name a readable CSV or TOML file"
+        ) from None
+    except (ValueError, tomllib.TOMLDecodeError) as exc:
+        reason = " ".join(str(exc).split())[:160]
+        raise SDTError(f"{path}: cannot read the allocation table ({reason})") from None
+    missing = set(_REQUIRED) - set(table.columns)
     if missing:
         raise SDTError(f"{path}: allocation table lacks column(s) {sorted(missing)}")
     known = {(r.machine, r.run): r for r in runs}
     rows = []
     for index, row in table.iterrows():
-        line = f"{path}: row {int(index) + 2}"  # header is line 1
+        line = f"{path}: entry {int(index) + 1}" if toml else f"{path}: row {int(index) + 2}"
         if row["side"] not in ("train", "test"):
             raise SDTError(f"{line}: side {row['side']!r} must be 'train' or 'test'")
         if row["scenario"] not in ("forward", "backward", "interpolation"):
