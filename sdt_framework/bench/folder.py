@@ -168,8 +168,8 @@ def claim_results_folder(out: str | Path, config: BenchmarkConfig) -> bool:
         if changed:
             raise SDTError(
                 f"--out {out} holds the results of another configuration "
-                f"({'; '.join(changed[:3])}); resume it with its own config.toml, "
-                f"or choose a new --out folder"
+                f"({'; '.join(changed[:3])}); resume it with `sdt benchmark "
+                f"{out / 'config.toml'} --out {out}`, or choose a new --out folder"
             )
     ensure_writable_dir(out, "results folder", "--out")
     if not (out / MARKER).exists():

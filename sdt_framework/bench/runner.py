@@ -39,7 +39,7 @@ from .folder import claim_results_folder
 from .plan import Plan, plan_benchmark
 from .store import load_finished, store_finished
 
-__all__ = ["BenchmarkResult", "Plan", "plan_benchmark", "run_benchmark"]
+__all__ = ["BenchmarkResult", "Plan", "plan_benchmark", "preflight", "run_benchmark"]
 
 Progress = Callable[[str, int, int], None]
 Warn = Callable[[str], None]
@@ -169,6 +169,25 @@ def _tasks(plan: Plan, features: pd.DataFrame, done: set[str]):
                 )
 
 
+def preflight(plan: Plan, out_dir: str | Path) -> Path:
+    """Every check that needs no computation, then claim ``out_dir``; returns the cache folder.
+
+    A malformed scheduler address, a feature cache or results folder that
+    cannot be written, or a results folder that must not be (see
+    :func:`~sdt_framework.bench.folder.claim_results_folder`) is an ``SDTError``
+    here, before any work. Calling it again for the same plan changes nothing.
+    """
+    config = plan.config
+    if config.backend == "dask" and config.scheduler:
+        check_scheduler_address(config.scheduler)
+    cache_dir = ensure_writable_dir(
+        config.cache_dir or default_cache_dir(), "feature cache", "--cache-dir or SDT_CACHE_DIR"
+    )
+    claim_results_folder(out_dir, config)
+    ensure_writable_dir(Path(out_dir) / "runs", "results folder", "--out")
+    return cache_dir
+
+
 def run_benchmark(
     plan: Plan,
     out_dir: str | Path,
@@ -185,8 +204,7 @@ def run_benchmark(
     Raises
     ------
     SDTError
-        Before any work: a malformed scheduler address, a cache or results
-        folder that cannot be written, or a results folder that must not be.
+        Before any work, from :func:`preflight`.
     KeyboardInterrupt
         On Ctrl-C; nothing of an unfinished run is stored.
     """
@@ -194,13 +212,8 @@ def run_benchmark(
     out_dir = Path(out_dir)
     report = progress or (lambda stage, done, total: None)
     warn = warn or _warn
-    if config.backend == "dask" and config.scheduler:
-        check_scheduler_address(config.scheduler)
-    cache_dir = ensure_writable_dir(
-        config.cache_dir or default_cache_dir(), "feature cache", "--cache-dir or SDT_CACHE_DIR"
-    )
-    claim_results_folder(out_dir, config)
-    runs_dir = ensure_writable_dir(out_dir / "runs", "results folder", "--out")
+    cache_dir = preflight(plan, out_dir)
+    runs_dir = out_dir / "runs"
     jobs = [
         FeatureJob(
             r,

@@ -39,19 +39,18 @@ def _resume_command(ctx: typer.Context, out_dir: Path, yes: bool) -> str:
     return shlex.join(command + (["--yes"] if yes else []))
 
 
-def _interrupted(ctx: typer.Context, out_dir: Path, yes: bool) -> typer.Exit:
-    from ..bench.folder import MARKER
-
-    if (out_dir / MARKER).is_file() and (out_dir / "config.toml").is_file():
+def _interrupted(ctx: typer.Context, out_dir: Path, yes: bool, claimed: bool) -> typer.Exit:
+    """The one line after Ctrl-C: how to resume once ``out_dir`` is claimed, else start again."""
+    if claimed:
         stored = len(list((out_dir / "runs").glob("*.json")))
         _say(
             "interrupted:",
             "yellow",
-            f"{stored} finished runs are stored in {out_dir}; resume with: "
+            f"{stored} finished run{'' if stored == 1 else 's'} kept in {out_dir}; resume with: "
             f"{_resume_command(ctx, out_dir, yes)}",
         )
     else:
-        _say("interrupted:", "yellow", "before anything was written; run the same command again")
+        _say("interrupted:", "yellow", "before the run started; run the same command again")
     return typer.Exit(EXIT_INTERRUPTED)
 
 
@@ -211,25 +210,26 @@ def benchmark(
     if no_report:
         overrides["report"] = False
     out_dir = out or Path("results") / dt.datetime.now().strftime("%Y%m%d-%H%M%S")
+    claimed: list[bool] = []  # set once the results folder is claimed (resumable from then on)
     with watch_interrupts() as watch:
         try:
             config = load_config(config_file, overrides)
-            failed = _run(ctx, config, out_dir, yes)
+            failed = _run(ctx, config, out_dir, yes, claimed)
         except KeyboardInterrupt:
-            raise _interrupted(ctx, out_dir, yes) from None
+            raise _interrupted(ctx, out_dir, yes, bool(claimed)) from None
         except Exception:
             if not watch.seen:  # e.g. a worker pool broken by the same Ctrl-C
                 raise
-            raise _interrupted(ctx, out_dir, yes) from None
+            raise _interrupted(ctx, out_dir, yes, bool(claimed)) from None
     if failed:
         raise typer.Exit(EXIT_CLASSIFIER_FAILED)
 
 
-def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool) -> bool:
+def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: list[bool]) -> bool:
     """Plan, check the size, run, write; True if some classifier failed in all its runs."""
     from ..bench.estimate import CONFIRM_ABOVE_SECONDS, estimate
     from ..bench.output import write_outputs
-    from ..bench.runner import plan_benchmark, run_benchmark
+    from ..bench.runner import plan_benchmark, preflight, run_benchmark
 
     plan = plan_benchmark(config, registry(ctx))
     size = estimate(plan, stored_runs=len(list((out_dir / "runs").glob("*.json"))))
@@ -238,6 +238,8 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool) -> bool:
             f"this benchmark is {size.line()}; add --yes to start it, "
             f"or lower --repeats or select fewer sensors, classifiers or machines"
         )
+    preflight(plan, out_dir)
+    claimed.append(True)
     for name, reason in plan.skipped_sensors.items():
         err_console.print(f"skipped sensor {name}: {reason}")
     for (machine, scenario), reason in sorted(plan.skipped.items()):

@@ -104,7 +104,7 @@ def test_ctrl_c_exits_130_with_the_exact_command_that_resumes(flag, tmp_path):
     assert not flag.exists()
     # the last line (sklearn may warn before it that batch_size exceeds these tiny training sets)
     line = first.stderr.strip().splitlines()[-1]
-    assert line.startswith("interrupted: 1 finished runs are stored in")
+    assert line.startswith("interrupted: 1 finished run kept in")
     assert "Traceback" not in first.stderr and "Training interrupted" not in first.stderr
     command = shlex.split(line.split("resume with: ", 1)[1])
     assert command == ["sdt", "benchmark", str(out / "config.toml"), "--out", str(out)]
