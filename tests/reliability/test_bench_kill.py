@@ -22,7 +22,8 @@ import pytest
 from sdt_framework.bench.results import RUN_COLUMNS
 
 QUICK = ["--quick", "--machines", "Motor-2", "--sensors", "adxl345", "--classifiers", "lr,mlp"]
-RUNS = 12  # 3 scenarios x 1 sensor x 2 classifiers x 2 repeats
+QUICK += ["--repeats", "4"]  # enough runs (about 2 s of fitting) to land a signal among them
+RUNS = 24  # 3 scenarios x 1 sensor x 2 classifiers x 4 repeats
 SDT = [sys.executable, "-m", "sdt_framework"]
 
 
@@ -78,7 +79,7 @@ def test_sigint_and_sigkill_in_the_classifier_phase_then_resume(tmp_path, monkey
     pd.testing.assert_series_equal(macro_f1(out), clean)
 
     out = tmp_path / "killed"
-    code, _ = stop_in_classifier_phase(start(out, "--jobs", "2"), out, signal.SIGKILL)
+    code, _ = stop_in_classifier_phase(start(out, "--jobs", "1"), out, signal.SIGKILL)
     assert code == -signal.SIGKILL
-    finish([*SDT, "benchmark", *QUICK, "--no-report", "--out", str(out)])  # same command again
+    finish([*SDT, "benchmark", *QUICK, "--no-report", "--out", str(out), "--jobs", "1"])  # again
     pd.testing.assert_series_equal(macro_f1(out), clean)
