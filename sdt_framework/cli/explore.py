@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import datetime as dt
+import shlex
 import sys
 from importlib import resources
 from pathlib import Path
@@ -11,9 +12,6 @@ from typing import Any
 import typer
 
 from .common import console, err_console, registry, table
-
-#: estimated runs above this many seconds need --yes
-CONFIRM_SECONDS = 3600.0
 
 
 def _example() -> str:
@@ -72,42 +70,71 @@ def explore(
         return
     if sweep_file is None:
         raise typer.BadParameter("give a sweep file, or --example to print one", param_hint="SWEEP")
-    from ..bench.estimate import estimate_seconds
-    from ..bench.output import write_outputs
-    from ..bench.runner import run_benchmark
-    from ..errors import SDTError
-    from ..explore.output import write_explore
-    from ..explore.run import explore_table, plan_explore
+    from ..bench.interrupt import watch_interrupts
     from ..explore.sweep import load_sweep
-    from .progress import progress_bar
 
     sweep, protocol = load_sweep(sweep_file)
     given = {"data": data, "jobs": jobs, "backend": backend, "scheduler": scheduler}
     overrides: dict[str, Any] = {k: v for k, v in given.items() if v is not None}
     if quick:
         overrides["quick"] = True
-    reg = registry(ctx)
-    explore_plan = plan_explore(sweep, protocol, overrides, reg, where=str(sweep_file))
-    plan = explore_plan.plan
     out_dir = out or Path("results") / dt.datetime.now().strftime("explore-%Y%m%d-%H%M%S")
+    resume = shlex.join(["sdt", "explore", str(sweep_file), "--out", str(out_dir)])
+    with watch_interrupts():
+        try:
+            tables = _run(ctx, sweep, protocol, overrides, str(sweep_file), out_dir, yes, no_report)
+        except KeyboardInterrupt:
+            err_console.print(
+                f"interrupted: finished runs are kept in {out_dir}; resume with the same "
+                f"command and --out ({resume}{' --quick' if quick else ''})",
+                highlight=False,
+                soft_wrap=True,
+            )
+            raise typer.Exit(130) from None
+    _print_min_spec(tables["min_spec"])
+
+
+def _run(
+    ctx: typer.Context,
+    sweep: Any,
+    protocol: dict[str, Any],
+    overrides: dict[str, Any],
+    where: str,
+    out_dir: Path,
+    yes: bool,
+    no_report: bool,
+) -> dict[str, Any]:
+    """Plan the sweep, check its size and the folder, run it, write and report."""
+    from ..bench.estimate import CONFIRM_ABOVE_SECONDS, estimate
+    from ..bench.output import write_outputs
+    from ..bench.runner import preflight, run_benchmark
+    from ..errors import SDTError
+    from ..explore.output import write_explore
+    from ..explore.run import explore_table, plan_explore
+    from .progress import progress_bar
+
+    reg = registry(ctx)
+    explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where)
+    plan = explore_plan.plan
+    size = estimate(plan, stored_runs=len(list((out_dir / "runs").glob("*.json"))))
+    if size.seconds > CONFIRM_ABOVE_SECONDS and not yes:
+        raise SDTError(
+            f"this sweep is {size.line()}; add --yes to run it, or shrink it (--quick, fewer "
+            f"levels, repeats or classifiers)"
+        )
+    preflight(plan, out_dir)
     for row in explore_plan.skipped.itertuples():
-        err_console.print(f"skipped point {row.point}: {row.reason}", markup=False)
+        err_console.print(f"skipped point {row.point}: {row.reason}", highlight=False)
+    for name, reason in plan.skipped_sensors.items():
+        err_console.print(f"skipped sensor {name}: {reason}", highlight=False)
     for (machine, scenario), reason in sorted(plan.skipped.items()):
-        err_console.print(f"skipped {machine} / {scenario}: {reason}", markup=False)
-    seconds, runs = estimate_seconds(plan)
+        err_console.print(f"skipped {machine} / {scenario}: {reason}", highlight=False)
     console.print(
         f"{len(explore_plan.points)} points ({len(explore_plan.skipped)} skipped) + reference "
-        f"and base: {runs} runs on {len(plan.recordings)} recordings, estimated "
-        f"{seconds / 60:.0f} min on {plan.config.n_jobs()} process(es) -> {out_dir}",
-        markup=False,
+        f"and base on {len(plan.recordings)} recordings: {size.line()} -> {out_dir}",
         highlight=False,
         soft_wrap=True,
     )
-    if seconds > CONFIRM_SECONDS and not yes:
-        raise SDTError(
-            f"this sweep is estimated at {seconds / 3600:.1f} h ({runs} runs); add --yes to run "
-            f"it, or shrink it (--quick, fewer levels, repeats or classifiers)"
-        )
     with progress_bar() as progress:
         result = run_benchmark(plan, out_dir, progress)
     results = write_outputs(result, out_dir)
@@ -116,5 +143,5 @@ def explore(
         from ..report import write_report
 
         write_report(out_dir, registry=reg)
-    _print_min_spec(tables["min_spec"])
-    console.print(f"{len(results)} runs; exploration in {out_dir}", markup=False, highlight=False)
+    console.print(f"{len(results)} runs; exploration in {out_dir}", highlight=False)
+    return tables
