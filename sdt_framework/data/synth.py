@@ -33,15 +33,20 @@ def _clipped_normal(gen: np.random.Generator, sd: float, limit: float, size: int
 
 @cache
 def _resonator(freq: float, zeta: float, fs: float) -> tuple[np.ndarray, np.ndarray, float]:
-    """Two-pole resonator (impulse response peak ~1) and its white-noise RMS gain."""
+    """Band-pass resonance (impulse response peak 1) and its white-noise RMS gain.
+
+    Zeros at DC and Nyquist: a structure's acceleration response to a force
+    vanishes at low frequency, so flow noise and impacts add nothing below the
+    shaft-synchronous band.
+    """
     omega = 2 * np.pi * freq / fs
     r = np.exp(-zeta * omega)
-    b = np.array([np.sin(omega)])
     a = np.array([1.0, -2 * r * np.cos(omega), r * r])
     impulse = np.zeros(int(12 / (zeta * omega)))
     impulse[0] = 1.0
-    gain = float(np.sqrt(np.sum(signal.lfilter(b, a, impulse) ** 2)))
-    return b, a, gain
+    h = signal.lfilter([1.0, 0.0, -1.0], a, impulse)
+    b = np.array([1.0, 0.0, -1.0]) / np.abs(h).max()
+    return b, a, float(np.sqrt(np.sum((h / np.abs(h).max()) ** 2)))
 
 
 @cache
@@ -59,16 +64,21 @@ def _impulses(n: int, fs: float, times: np.ndarray, amplitudes: np.ndarray) -> n
 
 
 def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatter: dict):
-    """(group, order, complex amplitude) of every shaft-synchronous component of a run."""
-    terms: dict[tuple[str, float], complex] = {}
-    table = [(g, k, a, "base") for g, k, a in m.BASELINE]
-    table += [(g, k, a * level, condition) for g, k, a in m.FAULT_HARMONICS.get(condition, ())]
-    for group, order, amp, tag in table:
-        # phase fixed per machine and component: added unbalance mass always at the same angle
+    """Shaft-synchronous components of a run: (baseline, fault), each {(group, order): amp}.
+
+    The baseline is the healthy machine's vibration, whose response at each sensor
+    varies from run to run (installation); the fault adds a component at a phase
+    fixed per machine and component (the added unbalance mass always at the same angle).
+    """
+    parts: tuple[dict, dict] = ({}, {})
+    table = [(0, g, k, a, "base") for g, k, a in m.BASELINE]
+    table += [(1, g, k, a * level, condition) for g, k, a in m.FAULT_HARMONICS.get(condition, ())]
+    for part, group, order, amp, tag in table:
         phase = rng(seed, machine.name, "phase", group, order, tag).uniform(0, 2 * np.pi)
         key = (group, float(order))
+        terms = parts[part]
         terms[key] = terms.get(key, 0j) + amp * scatter[group] * np.exp(1j * phase)
-    return terms
+    return parts
 
 
 def _sources(
@@ -85,12 +95,15 @@ def _sources(
     f1 = machine.shaft_hz * speed * (1 + _clipped_normal(gen, 5e-4, 3))
     theta = gen.uniform(0, 2 * np.pi)  # shaft angle at the first sample
     t = np.arange(n) / fs
-    lowfreq: dict[str, np.ndarray] = {}
+    drift = np.exp(_clipped_normal(gen, m.ACQUISITION_DRIFT, 3, 2))  # (low, broadband)
     rotation: dict[float, np.ndarray] = {}
-    for (group, order), amp in _harmonics(machine, condition, level, seed, scatter).items():
-        if order not in rotation:
-            rotation[order] = np.exp(1j * order * (2 * np.pi * f1 * t + theta))
-        lowfreq[group] = lowfreq.get(group, 0) + amp * rotation[order]
+    lowfreq: tuple[dict[str, np.ndarray], dict[str, np.ndarray]] = ({}, {})
+    for part, terms in enumerate(_harmonics(machine, condition, level, seed, scatter)):
+        for (group, order), amp in terms.items():
+            if order not in rotation:
+                rotation[order] = np.exp(1j * order * (2 * np.pi * f1 * t + theta))
+            gain = drift[0] if part == 0 else 1.0
+            lowfreq[part][group] = lowfreq[part].get(group, 0) + gain * amp * rotation[order]
     impacts = {"motor_bearing": np.zeros(n), "pump_bearing": np.zeros(n), "coupling": np.zeros(n)}
     if condition in m.BEARING_FAULTS:
         where, bearing, race, amp = m.BEARING_FAULTS[condition]
@@ -125,21 +138,28 @@ def _sources(
         envelope += m.CAVITATION_HISS * amp * (1 + np.cos(2 * np.pi * vpf * t)) / 2
         carrier = signal.sosfilt(_cavitation_band(fs), gen.standard_normal(n))
         cavitation = envelope * carrier / np.std(carrier)
-    flow = gen.standard_normal(n)
+    flow = drift[1] * gen.standard_normal(n)
     return {"lowfreq": lowfreq, "impacts": impacts, "flow": flow, "cavitation": cavitation}
 
 
-def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float) -> np.ndarray:
-    """One sensor's view of the sources: complex gains, resonances, direct cavitation, noise."""
+def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float, install: tuple):
+    """One sensor's view of the sources: complex gains, resonances, direct cavitation, noise.
+
+    ``install`` = (low, broadband): this run's factors on the channel's response
+    to the healthy machine's shaft-synchronous vibration and to flow noise.
+    """
     out = np.zeros(noise.size, dtype=complex)
-    for group, wave in src["lowfreq"].items():
+    base, fault = src["lowfreq"]
+    for group, wave in base.items():
+        out += path.gains[group] * install[0] * wave
+    for group, wave in fault.items():
         out += path.gains[group] * wave
     result = out.real + path.cavitation * src["cavitation"] + noise
     excitation = sum(path.impacts[k] * v for k, v in src["impacts"].items())
+    flow = src["flow"] * (m.FLOW_NOISE_G * install[1])
     for freq, zeta, weight in path.modes:
         b, a, gain = _resonator(freq, zeta, fs)
-        drive = excitation + src["flow"] * (m.FLOW_NOISE_G / gain)
-        result += weight * signal.lfilter(b, a, drive)
+        result += weight * signal.lfilter(b, a, excitation + flow / gain)
     return result
 
 
@@ -172,9 +192,14 @@ def generate_run(
     severity = 1 if condition == "healthy" else level
     n = round(duration_s * fs)
     out = {ch: np.empty((acquisitions, n)) for ch in channels}
+    install = {}  # drawn per channel, so independent of which channels are selected
+    for ch in channels:
+        gen = rng(seed, machine, run, "install", ch)
+        sds = (m.CHANNELS[ch].install_sd, m.HF_INSTALL_SD)
+        install[ch] = tuple(float(np.exp(_clipped_normal(gen, sd, 2.5))) for sd in sds)
     for acq in range(acquisitions):
         src = _sources(spec, condition, severity, run, acq, n, seed, fs)
         for ch in channels:
             noise = rng(seed, machine, run, "noise", acq, ch).normal(0, m.SENSOR_NOISE_G, n)
-            out[ch][acq] = _channel(src, m.CHANNELS[ch], noise, fs)
+            out[ch][acq] = _channel(src, m.CHANNELS[ch], noise, fs, install[ch])
     return out

@@ -2,16 +2,25 @@
 
 Everything the generator (``synth.py``) assumes is here, with its reason, so
 that the documentation and the tests can compute the expected frequencies
-independently of the generator.
+independently of the generator. The levels are calibrated against published
+statistics of the real NLN-EMP archive (docs/data.md, "Calibration";
+``benchmarks/calibrate_synth.py`` prints each figure next to its source):
 
-Choices (documented in docs/data.md):
+- [A] felcoslop/TP_CONFIABILIDADE@e73e8a85, code/resultados/tabelas/features.csv:
+  band RMS of every 12 s acquisition of Motor-4 ch1/ch2/ch5 (10-200/300 Hz) and
+  Motor-2 ch1 (1-9 kHz) for the healthy runs and several faults;
+- [B] CYPHr007/PILAR@5252bc18, nln_emp_features.csv: overall RMS of Motor-2 ch1
+  per acquisition for healthy, impeller and the three bearing faults;
+- [M] the dataset's own metadata as read by public readers: motors MG160MA4
+  (4-pole, Motor-2) and MG180MB2 (2-pole, Motor-4); Motor-4 at 70 % runs at
+  2075 rpm ("measurement overview.xlsx", Speed (RPM) +- 5, via
+  AKSHAJ-SHELL/pumpwatch src/pumpwatch/datasets/twente_raw.py); Motor-2 bearings
+  6309.C4 (motor, faults at its NDE) and 6308.2Z.C3 (pump NDE);
+- [P] the paper: Motor-2 at 100 % is 1480 rpm; cavitation suction 4 on ch1
+  saturates the ADXL345 (+-16 g) but not the ADXL357 (+-40 g).
 
-- Rated speed 1480 rpm (4-pole induction motor on 50 Hz, as Motor-2 at 100 %).
-  Motor-4 runs at 70 %: 0.7 x 1480 = 1036 rpm (17.27 Hz).
-- Pump impeller with 6 vanes: vane pass = 6 x shaft speed.
-- Motor bearings SKF 6206 (9 balls, d = 9.525 mm, pitch D = 46 mm, 0 deg);
-  pump bearing 6307 (8 balls, d = 13.494 mm, D = 58.5 mm). Outer/inner race
-  defect frequencies BPFO/BPFI = n/2 (1 -/+ d/D cos a) x shaft speed.
+Where no source gives a figure the physical model is kept and the constant
+says so ("no source").
 """
 
 from __future__ import annotations
@@ -29,8 +38,7 @@ __all__ = [
     "Machine",
 ]
 
-RATED_RPM = 1480.0
-VANES = 6
+VANES = 6  # no source for either pump's vane count: kept
 
 
 @dataclass(frozen=True)
@@ -53,8 +61,10 @@ class Bearing:
         return self.balls / 2 * (1 + self.ball_mm / self.pitch_mm)
 
 
-MOTOR_BEARING = Bearing("6206", 9, 9.525, 46.0)
-PUMP_BEARING = Bearing("6307", 8, 13.494, 58.5)
+# designations [M]; internal geometry from a public bearing table (8 balls; pitch =
+# mean of bore and outside diameter, 45/100 and 40/90 mm), see docs/data.md
+MOTOR_BEARING = Bearing("6309", 8, 17.46, 72.5)
+PUMP_BEARING = Bearing("6308", 8, 15.08, 65.0)
 
 
 @dataclass(frozen=True)
@@ -76,7 +86,7 @@ MACHINES: dict[str, Machine] = {
     "Motor-4": Machine(
         "Motor-4",
         "70",
-        0.7 * RATED_RPM,
+        2075.0,  # [M]: 2-pole motor at 70 %
         (
             ("healthy", 3),
             ("unbalance motor", 6),
@@ -92,7 +102,7 @@ MACHINES: dict[str, Machine] = {
     "Motor-2": Machine(
         "Motor-2",
         "100",
-        RATED_RPM,
+        1480.0,  # [P]: 4-pole motor at 100 %
         (
             ("healthy", 3),
             ("impeller", 3),
@@ -113,6 +123,9 @@ class ChannelPath:
     sensors see a rotating force 90 degrees apart. ``modes`` are the kHz
     structural resonances (frequency Hz, damping ratio, weight) that impacts
     and flow noise excite; ``impacts`` weights each impact source by distance.
+    ``install_sd`` is the log-normal SD, from run to run, of the channel's
+    response to the healthy machine's shaft-synchronous vibration: every run
+    is a new installation (re-aligned, re-torqued, new flow set point).
     """
 
     name: str
@@ -121,52 +134,79 @@ class ChannelPath:
     modes: tuple[tuple[float, float, float], ...]
     impacts: dict[str, float]
     cavitation: float
+    install_sd: float
 
 
+def _scaled(gains: dict[str, complex], k: float) -> dict[str, complex]:
+    return {group: k * g for group, g in gains.items()}
+
+
+# gains: the pattern between groups is the physical model's (no source); one factor
+# per channel sets the healthy Motor-4 low band to [A] (ch1 10-300 Hz 0.094 g, ch2
+# and ch5 10-200 Hz 0.049 and 0.089 g); ch3 and ch4 (no source) take ch1's factor.
+# install_sd: chosen so that the CV of three healthy runs is typically [A]'s (ch1
+# 0.091, ch2 0.385, ch5 0.045); ch3 and ch4 (no source) take ch1's.
 CHANNELS: dict[str, ChannelPath] = {
     "ch1": ChannelPath(
         "ch1",
         "motor non-drive-end horizontal",
-        {"motor_radial": 1.0, "motor_axial": 0.15, "pump_radial": 0.3, "pump_axial": 0.05},
+        _scaled(
+            {"motor_radial": 1.0, "motor_axial": 0.15, "pump_radial": 0.3, "pump_axial": 0.05}, 3.1
+        ),
         ((2900.0, 0.04, 1.0), (6800.0, 0.05, 0.5)),
         {"motor_bearing": 0.6, "pump_bearing": 0.15, "coupling": 0.5},
         0.8,
+        0.10,
     ),
     "ch2": ChannelPath(
         "ch2",
         "motor drive-end vertical",
-        {"motor_radial": 0.9j, "motor_axial": 0.15, "pump_radial": 0.45j, "pump_axial": 0.05},
+        _scaled(
+            {"motor_radial": 0.9j, "motor_axial": 0.15, "pump_radial": 0.45j, "pump_axial": 0.05},
+            2.4,
+        ),
         ((3600.0, 0.035, 1.0), (5200.0, 0.05, 0.6)),
         {"motor_bearing": 1.0, "pump_bearing": 0.25, "coupling": 1.0},
         0.7,
+        0.45,
     ),
     "ch3": ChannelPath(
         "ch3",
         "motor drive-end axial",
-        {"motor_radial": 0.25, "motor_axial": 1.0, "pump_radial": 0.1, "pump_axial": 0.4},
+        _scaled(
+            {"motor_radial": 0.25, "motor_axial": 1.0, "pump_radial": 0.1, "pump_axial": 0.4}, 3.1
+        ),
         ((2400.0, 0.04, 1.0), (7400.0, 0.05, 0.4)),
         {"motor_bearing": 0.7, "pump_bearing": 0.2, "coupling": 0.7},
         0.6,
+        0.09,
     ),
     "ch4": ChannelPath(
         "ch4",
         "pump drive-end horizontal",
-        {"motor_radial": 0.4, "motor_axial": 0.05, "pump_radial": 1.0, "pump_axial": 0.15},
+        _scaled(
+            {"motor_radial": 0.4, "motor_axial": 0.05, "pump_radial": 1.0, "pump_axial": 0.15}, 3.1
+        ),
         ((4300.0, 0.04, 1.0), (6100.0, 0.045, 0.6)),
         {"motor_bearing": 0.2, "pump_bearing": 1.0, "coupling": 0.9},
         1.0,
+        0.09,
     ),
     "ch5": ChannelPath(
         "ch5",
         "pump non-drive-end vertical",
-        {"motor_radial": 0.25j, "motor_axial": 0.05, "pump_radial": 0.9j, "pump_axial": 0.15},
+        _scaled(
+            {"motor_radial": 0.25j, "motor_axial": 0.05, "pump_radial": 0.9j, "pump_axial": 0.15},
+            4.8,
+        ),
         ((3200.0, 0.035, 1.0), (8200.0, 0.05, 0.4)),
         {"motor_bearing": 0.15, "pump_bearing": 0.8, "coupling": 0.4},
         0.9,
+        0.045,
     ),
 }
 
-#: healthy baseline harmonics: (group, shaft order, amplitude g)
+#: healthy baseline harmonics: (group, shaft order, amplitude g); pattern: no source
 BASELINE: tuple[tuple[str, float, float], ...] = (
     ("motor_radial", 1, 0.04),
     ("motor_radial", 2, 0.015),
@@ -179,29 +219,24 @@ BASELINE: tuple[tuple[str, float, float], ...] = (
     ("pump_axial", VANES, 0.02),
 )
 
-#: fault harmonics added per severity level: class -> (group, order, g per level)
+#: fault harmonics added per severity level: class -> (group, order, g per level).
+#: Unbalance and parallel misalignment: set by [A]'s growth of band RMS with
+#: severity (ch2, ch5, ch1); angular: scaled down until its low band stays inside
+#: the healthy spread, as [A] reports; coupling, impeller, pump bearing: no source.
 FAULT_HARMONICS: dict[str, tuple[tuple[str, float, float], ...]] = {
-    "unbalance motor": (("motor_radial", 1, 0.08),),
-    "unbalance pump": (("pump_radial", 1, 0.10),),
+    "unbalance motor": (("motor_radial", 1, 0.017),),
+    "unbalance pump": (("pump_radial", 1, 0.005),),
     "align parallel": (
-        ("motor_radial", 2, 0.06),
-        ("pump_radial", 2, 0.05),
-        ("motor_radial", 1, 0.02),
-        ("motor_axial", 2, 0.01),
+        ("motor_radial", 2, 0.032),
+        ("pump_radial", 2, 0.027),
+        ("motor_radial", 1, 0.011),
+        ("motor_axial", 2, 0.0053),
     ),
     "align angular": (
-        ("motor_axial", 1, 0.07),
-        ("pump_axial", 1, 0.05),
-        ("motor_axial", 2, 0.04),
-        ("motor_radial", 1, 0.015),
-    ),
-    "align combination": (
-        ("motor_radial", 2, 0.042),
-        ("pump_radial", 2, 0.035),
-        ("motor_axial", 1, 0.05),
-        ("pump_axial", 1, 0.035),
-        ("motor_axial", 2, 0.028),
-        ("motor_radial", 1, 0.025),
+        ("motor_axial", 1, 0.014),
+        ("pump_axial", 1, 0.01),
+        ("motor_axial", 2, 0.008),
+        ("motor_radial", 1, 0.003),
     ),
     "coupling": (
         ("motor_radial", 1, 0.02),
@@ -216,26 +251,44 @@ FAULT_HARMONICS: dict[str, tuple[tuple[str, float, float], ...]] = {
     ),
     "bearing pump": (("pump_radial", 1, 0.02),),
 }
+# combination: 70 % of parallel plus 70 % of angular (no source)
+FAULT_HARMONICS["align combination"] = tuple(
+    (group, order, 0.7 * amp)
+    for name in ("align parallel", "align angular")
+    for group, order, amp in FAULT_HARMONICS[name]
+)
 
-#: cavitation bursts: class -> (peak amplitude g at level 1..L, bursts per second)
+#: cavitation bursts: class -> (peak amplitude g at level 1..L, bursts per second).
+#: Suction: level 4 set by [P] (ch1 saturates the ADXL345, not the ADXL357), the
+#: other levels in the model's proportion; discharge: no source, kept.
 CAVITATION: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
-    "cavitation suction": ((0.8, 2.0, 4.5, 9.0), (8.0, 12.0, 16.0, 20.0)),
+    "cavitation suction": ((1.2, 3.0, 6.75, 13.5), (8.0, 12.0, 16.0, 20.0)),
     "cavitation discharge": ((0.5, 0.7, 0.95, 1.25, 1.6), (6.0, 8.0, 10.0, 12.0, 14.0)),
 }
 
-#: bearing impacts: class -> (bearing location, bearing, race, impact g per level)
+#: bearing impacts: class -> (bearing location, bearing, race, impact g per level).
+#: Motor bearing: set by [B]'s growth of ch1 overall RMS with severity; pump
+#: bearing: no source for the pump channels, kept (its ch1 level matches [B]).
 BEARING_FAULTS: dict[str, tuple[str, Bearing, str, float]] = {
-    "bearing bpfo": ("motor_bearing", MOTOR_BEARING, "outer", 0.5),
-    "bearing bpfi": ("motor_bearing", MOTOR_BEARING, "inner", 0.6),
+    "bearing bpfo": ("motor_bearing", MOTOR_BEARING, "outer", 1.0),
+    "bearing bpfi": ("motor_bearing", MOTOR_BEARING, "inner", 2.0),
     "bearing pump": ("pump_bearing", PUMP_BEARING, "outer", 1.5),
 }
 
-COUPLING_IMPACT_G = 0.35  # g per level, two impacts per revolution (jaw coupling, worn spider)
-FLOW_NOISE_G = 0.012  # RMS of flow turbulence through the structure (all classes)
+COUPLING_IMPACT_G = 0.35  # g per level, two impacts per revolution (worn jaw spider): no source
+# broadband flow/structure noise, RMS per unit mode weight: Motor-2 ch1 healthy overall
+# RMS 0.53 g, 96 % of it in 1-9 kHz [A, B]; Motor-4 (no source) takes the same
+FLOW_NOISE_G = 0.47
 SENSOR_NOISE_G = 0.004  # RMS of independent broadband noise per channel
-SPEED_JITTER = 0.002  # relative SD of run speed (clipped at 3 SD)
-AMPLITUDE_SCATTER = 0.03  # log-normal SD of run-to-run amplitude (clipped at 2 SD)
+SPEED_JITTER = 0.002  # relative SD of run speed (clipped at 3 SD): [M] states +- 5 rpm
+AMPLITUDE_SCATTER = 0.03  # log-normal SD of run-to-run source strength (clipped at 2 SD)
+# log-normal SD, run to run, of the broadband level: CV of three healthy runs on
+# Motor-2 ch1 is 0.21 (overall, 100 %) [B] and 0.32 (1-9 kHz, 75 %) [A]
+HF_INSTALL_SD = 0.34
+# log-normal SD between the acquisitions of one run: [A] 0.026 (band RMS), [B] 0.04
+ACQUISITION_DRIFT = 0.035
 BEARING_SLIP = 0.01  # relative SD of the interval between bearing impacts
 CAVITATION_BURST_S = 0.006  # decay time constant of one cavitation burst envelope
 CAVITATION_HISS = 0.2  # continuous cavitation noise, as a fraction of the burst amplitude
-CAVITATION_BAND_HZ = (2000.0, 8000.0)
+# collapse noise is broadband: from 1 kHz, so that [P]'s ADXL345 (1.6 kHz) saturates
+CAVITATION_BAND_HZ = (1000.0, 8000.0)
