@@ -4,14 +4,18 @@ Metadata is known without generating anything; ``Recording.load()`` generates
 its run (all selected channels at once, since channels share their sources)
 and keeps only the most recent run in memory, so loading channels of a run in
 sequence generates it once and memory stays bounded by one run
-(5 channels x acquisitions x duration x 20 kHz x 8 bytes).
+(5 channels x acquisitions x duration x 20 kHz x 8 bytes). Every recording's
+``source`` names the generator's fingerprint (a hash of its two modules), so
+features cached from an older generator are never served for a newer one.
 """
 
 from __future__ import annotations
 
+import hashlib
 import os
 from collections.abc import Iterable
 from functools import partial
+from pathlib import Path
 
 import numpy as np
 
@@ -20,9 +24,13 @@ from . import synth_model as m
 from .recording import Dataset, Recording, measurement_groups
 from .synth import FS_HZ, generate_run
 
-__all__ = ["DEFAULTS", "SyntheticPump", "open_synthetic"]
+__all__ = ["DEFAULTS", "GENERATOR", "SyntheticPump", "open_synthetic"]
 
 DEFAULTS = {"seed": 0, "acquisitions": 1, "duration": 12.0}
+#: fingerprint of the generator: the model and the code that draws from it
+GENERATOR = hashlib.sha256(
+    b"".join(Path(__file__).with_name(n).read_bytes() for n in ("synth.py", "synth_model.py"))
+).hexdigest()[:12]
 
 
 def _select(value: str | Iterable[str] | None, known: Iterable[str], what: str) -> list[str]:
@@ -80,7 +88,7 @@ class SyntheticPump(Dataset):
                                 n_acquisitions=acquisitions,
                                 samples_per_acquisition=n,
                                 measurement=measurement_groups(acquisitions),
-                                source="synthetic",
+                                source=f"synthetic (generator {GENERATOR})",
                                 reader=partial(self._generate, name, condition, level, ch),
                             )
                         )

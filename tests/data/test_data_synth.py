@@ -8,13 +8,15 @@ it must reproduce (docs/data.md, "Calibration").
 from __future__ import annotations
 
 import dataclasses
+import hashlib
+from pathlib import Path
 
 import numpy as np
 import pytest
 from scipy import signal
 
 from sdt_framework.chain import degrade
-from sdt_framework.data import open_synthetic
+from sdt_framework.data import open_synthetic, synth_dataset
 from sdt_framework.data import synth_model as model
 from sdt_framework.data.synth import generate_run
 from sdt_framework.registry import build_registry
@@ -185,6 +187,15 @@ def test_seed_determinism_and_selection_independence() -> None:
     full = open_synthetic(seed=3, duration=1.0, machines="Motor-2", conditions="impeller")
     rec = next(r for r in full.recordings() if r.run == "impeller 2" and r.channel == "ch4")
     np.testing.assert_array_equal(rec.load()[0], a)
+
+
+def test_recordings_name_the_generator_so_old_cached_features_are_not_reused() -> None:
+    here = Path(synth_dataset.__file__).parent
+    digest = hashlib.sha256(
+        (here / "synth.py").read_bytes() + (here / "synth_model.py").read_bytes()
+    ).hexdigest()[:12]
+    (rec, *_) = open_synthetic(machines="Motor-2").recordings()
+    assert rec.metadata()["source"] == f"synthetic (generator {digest})"
 
 
 def test_channels_are_views_of_one_event() -> None:
