@@ -55,6 +55,7 @@ M4 ch1 10-300 Hz, healthy CV run to run     | 0.091  | A   | value | cv M4 H ch1
 M4 ch5 10-200 Hz, CV between acquisitions   | 0.026  | A   | value | acv M4 H1 ch5 10-200
 unbalance motor 1 / healthy, ch2 10-200 Hz  | 0.776  | A   | value | ratio M4 UM1/H ch2 10-200
 unbalance motor 6 / 1, ch2 10-200 Hz        | 2.51   | A   | value | ratio M4 UM6/UM1 ch2 10-200
+unbalance motor 1-4, ch2 10-200 Hz, CV      | 0.062  | A   | value | cv M4 UM14 ch2 10-200
 unbalance pump 1 / healthy, ch5 10-200 Hz   | 1.024  | A   | value | ratio M4 UP1/H ch5 10-200
 unbalance pump 3 / 1, ch5 10-200 Hz         | 1.146  | A   | value | ratio M4 UP3/UP1 ch5 10-200
 align parallel 1 / healthy, ch1 10-300 Hz   | 1.21   | A   | value | ratio M4 AP1/H ch1 10-300
@@ -68,6 +69,7 @@ bearing bpfi 1 / healthy, ch1 overall       | 0.887  | B   | value | ratio M2 BI
 bearing bpfi 3 / 1, ch1 overall             | 1.34   | B   | value | ratio M2 BI3/BI1 ch1 all
 bearing bpfo 3 / 1, ch1 overall             | 1.13   | B   | value | ratio M2 BO3/BO1 ch1 all
 impeller (mean of 3) / healthy, ch1 all     | 0.75   | B   | value | ratio M2 IMP/H ch1 all
+impeller 1-3, ch1 overall RMS, CV           | 0.071  | B   | value | cv M2 IMP ch1 all
 bearing pump (mean of 3) / healthy, ch1 all   | 0.91   | B   | value | ratio M2 BP/H ch1 all
 cavitation suction 4 ch1: ADXL345 peak/16 g  | 1.0    | P   | >=    | sdt M4 adxl345 ch1 16
 cavitation suction 4 ch1: ADXL357 peak/40 g  | 1.0    | P   | <=    | sdt M4 adxl357 ch1 40
@@ -84,6 +86,7 @@ RUNS = {
     "H1": ["healthy 1"],
     "UM1": ["unbalance motor 1"],
     "UM6": ["unbalance motor 6"],
+    "UM14": _levels("unbalance motor", 1, 2, 3, 4),
     "UP1": ["unbalance pump 1"],
     "UP3": ["unbalance pump 3"],
     "AP1": ["align parallel 1"],

@@ -72,7 +72,8 @@ def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatte
     """
     parts: tuple[dict, dict] = ({}, {})
     table = [(0, g, k, a, "base") for g, k, a in m.BASELINE]
-    table += [(1, g, k, a * level, condition) for g, k, a in m.FAULT_HARMONICS.get(condition, ())]
+    step = m.SEVERITY_STEPS.get(condition, range(1, level + 1))[level - 1]
+    table += [(1, g, k, a * step, condition) for g, k, a in m.FAULT_HARMONICS.get(condition, ())]
     for part, group, order, amp, tag in table:
         phase = rng(seed, machine.name, "phase", group, order, tag).uniform(0, 2 * np.pi)
         key = (group, float(order))
@@ -192,11 +193,17 @@ def generate_run(
     severity = 1 if condition == "healthy" else level
     n = round(duration_s * fs)
     out = {ch: np.empty((acquisitions, n)) for ch in channels}
-    install = {}  # drawn per channel, so independent of which channels are selected
+    # installation: each healthy run is its own; the levels of a fault class share the
+    # class campaign's, each level with a small residual of its own. Drawn per channel,
+    # so independent of which channels are selected.
+    campaign, residual = (run, 0.0) if condition == "healthy" else (condition, m.LEVEL_SCATTER)
+    install = {}
     for ch in channels:
-        gen = rng(seed, machine, run, "install", ch)
-        sds = (m.CHANNELS[ch].install_sd, m.HF_INSTALL_SD)
-        install[ch] = tuple(float(np.exp(_clipped_normal(gen, sd, 2.5))) for sd in sds)
+        gen, own = rng(seed, machine, campaign, "install", ch), rng(seed, machine, run, "level", ch)
+        install[ch] = tuple(
+            float(np.exp(_clipped_normal(gen, sd, 2.5) + _clipped_normal(own, residual, 2.5)))
+            for sd in (m.CHANNELS[ch].install_sd, m.HF_INSTALL_SD)
+        )
     for acq in range(acquisitions):
         src = _sources(spec, condition, severity, run, acq, n, seed, fs)
         for ch in channels:

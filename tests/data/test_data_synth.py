@@ -71,7 +71,7 @@ def band_rms(x: np.ndarray, lo: float, hi: float) -> float:
 @pytest.fixture
 def no_scatter(monkeypatch: pytest.MonkeyPatch) -> None:
     """The physical model alone: no installation scatter, drift or source scatter."""
-    for name in ("HF_INSTALL_SD", "ACQUISITION_DRIFT", "AMPLITUDE_SCATTER"):
+    for name in ("HF_INSTALL_SD", "LEVEL_SCATTER", "ACQUISITION_DRIFT", "AMPLITUDE_SCATTER"):
         monkeypatch.setattr(model, name, 0.0)
     for ch, path in model.CHANNELS.items():
         monkeypatch.setitem(model.CHANNELS, ch, dataclasses.replace(path, install_sd=0.0))
@@ -117,8 +117,9 @@ def test_bearing_envelope_spectrum_peaks_at_defect_frequency(run: str, multiplie
 
 @pytest.mark.usefixtures("no_scatter")
 def test_unbalance_1x_is_the_vector_sum_of_residual_and_added_unbalance() -> None:
-    # |R + L F|^2 = |R|^2 + 2 L Re(R F*) + L^2 |F|^2: exactly quadratic in the level L,
-    # with L = 0 the healthy run (same residual once the scatter is off)
+    # |R + s F|^2 = |R|^2 + 2 s Re(R F*) + s^2 |F|^2: exactly quadratic in the added
+    # unbalance s (the model's effective size of each level; s = 0: the healthy run,
+    # the same residual once the scatter is off)
     f1 = SHAFT["Motor-4"]
     amps = [amplitude_near(gen("Motor-4", "healthy", 1, ["ch2"], 2.0)["ch2"][0], f1)]
     amps += [
@@ -126,7 +127,8 @@ def test_unbalance_1x_is_the_vector_sum_of_residual_and_added_unbalance() -> Non
         for k in range(1, 7)
     ]
     power = np.square(amps)
-    coef, residual, *_ = np.polyfit(np.arange(7.0), power, 2, full=True)
+    size = np.array([0.0, *model.SEVERITY_STEPS["unbalance motor"]])
+    coef, residual, *_ = np.polyfit(size, power, 2, full=True)
     assert coef[0] > 0
     assert residual[0] < 1e-3 * np.sum((power - power.mean()) ** 2)  # R^2 > 0.999
     assert amps[6] > 2 * amps[1]
