@@ -151,13 +151,15 @@ def test_angular_misalignment_grows_most_in_the_axial_direction() -> None:
 
 
 def test_cavitation_suction_saturates_the_adxl345_but_not_the_adxl357() -> None:
-    """The paper's Fig. 2: cavitation suction 4, ch1 clips the +-16 g ADXL345 only."""
-    x = load("Motor-4", "cavitation suction 4", "ch1")
+    """The paper's Fig. 2 (one 12 s acquisition): cavitation suction 4 on ch1 clips the
+    +-16 g ADXL345 only, and stays inside the reference sensor's +-80 g (Table 1)."""
+    x = load("Motor-4", "cavitation suction 4", "ch1", duration=12.0)
     registry = build_registry()
     y345, _ = degrade(x, FS, registry.sensor("adxl345"), noise=False)
     y357, _ = degrade(x, FS, registry.sensor("adxl357"), noise=False)
-    assert np.mean(np.abs(y345) >= 16.0 - 1e-9) > 1e-4
+    assert np.sum(np.abs(y345) >= 16.0 - 1e-9) >= 1
     assert np.abs(y357).max() < 40.0
+    assert 16.0 < np.abs(x).max() < 80.0
     healthy = load("Motor-4", "healthy 1", "ch4")
     suction = load("Motor-4", "cavitation suction 4", "ch4")
     assert band_rms(suction, 1000, 8000) > 3 * band_rms(healthy, 1000, 8000)
