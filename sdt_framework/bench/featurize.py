@@ -6,7 +6,9 @@ repetition and featurised. Repetition ``r`` draws the SDT
 noise from ``derive_seed(seed, "noise", r, recording_id)``, so results do not
 depend on the order or the process a task runs in. A profile that injects no
 noise (the reference) is deterministic: it is computed once and shared by all
-repetitions.
+repetitions. The stages at the recording's rate (mechanical and analog
+filters) run once per distinct setting (``chain.shared``) and are shared by
+the repetitions and by sensors that differ only in later stages, bit for bit.
 
 Feature blocks are cached on disk keyed by the dataset, the recording (and
 its file's size and modification time), the sensor's and the feature set's
@@ -27,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..chain import degrade
+from ..chain.shared import SharedPrefix, prefix_key
 from ..data.cache import CORRUPT_ENTRY_ERRORS
 from ..data.recording import Recording
 from ..features import extract
@@ -114,20 +116,25 @@ def _cache_path(job: FeatureJob, key: str) -> Path | None:
     return Path(job.cache_dir) / "features" / key[:2] / f"{key}.npz"
 
 
-def _compute(job: FeatureJob, data: np.ndarray, sensor: SensorSpec, chain_seed: int | None):
-    rec = job.recording
-    label = f"{rec.source} ({rec.recording_id})"
-    degraded, fs_out = degrade(
-        data,
-        rec.sampling_rate_hz,
-        sensor,
-        seed=chain_seed or 0,
-        noise=chain_seed is not None,
-        label=label,
-        threads=1,
-    )
+def _compute(shared: SharedPrefix, job: FeatureJob, sensor: SensorSpec, chain_seed: int | None):
+    degraded, fs_out = shared.degrade(sensor, seed=chain_seed or 0, noise=chain_seed is not None)
     table = extract(degraded, fs_out, job.feature_set, window_s=job.window_s, settle_s=job.settle_s)
     return table.values, table.acquisition, table.window
+
+
+def _by_prefix(job: FeatureJob) -> list[list[SensorSpec]]:
+    """The job's sensors (with their axis's figures), in groups of equal recording-rate prefix.
+
+    Sensors whose mechanical and analog stages are equal (sweep points that
+    differ in later stages) then share one prefix run, and, taken repetition
+    by repetition, their sampled signals and noise draws (``chain.shared``).
+    """
+    fs = job.recording.sampling_rate_hz
+    groups: dict[str, list[SensorSpec]] = {}
+    for named in job.sensors:
+        sensor = named.for_axis(job.axis)  # the name stays
+        groups.setdefault(prefix_key(sensor, fs), []).append(sensor)
+    return list(groups.values())
 
 
 def _read_cached(path: Path, n_features: int) -> tuple[np.ndarray, ...]:
@@ -148,17 +155,16 @@ def _read_cached(path: Path, n_features: int) -> tuple[np.ndarray, ...]:
 
 def featurize_recording(job: FeatureJob) -> RecordingFeatures:
     """Features of one recording for every (sensor, repetition) of the job."""
-    data: np.ndarray | None = None
+    shared: SharedPrefix | None = None  # the recording, read on first need
     out = RecordingFeatures()
     blocks = out.blocks
     n_features = len(job.feature_set.feature_names)
-    for named in job.sensors:
-        sensor = named.for_axis(job.axis)  # a part's per-axis figures; the name stays
-        done: dict[int | None, FeatureBlock] = {}
-        for repeat in range(job.repeats):
+    done: dict[tuple[str, int | None], FeatureBlock] = {}
+    for group, repeat in ((g, r) for g in _by_prefix(job) for r in range(job.repeats)):
+        for sensor in group:
             chain_seed = noise_seed(sensor, job.seed, repeat, job.recording.recording_id)
-            if chain_seed in done:  # deterministic chain: identical for every repetition
-                blocks.append(_with_repeat(done[chain_seed], repeat))
+            if (sensor.name, chain_seed) in done:  # deterministic chain: same every repetition
+                blocks.append(_with_repeat(done[(sensor.name, chain_seed)], repeat))
                 continue
             key = _key(job, sensor, chain_seed)
             path = _cache_path(job, key)
@@ -174,15 +180,17 @@ def featurize_recording(job: FeatureJob) -> RecordingFeatures:
                     )
                     path.unlink(missing_ok=True)
             if arrays is None:
-                if data is None:
-                    data = job.recording.load()
-                arrays = _compute(job, data, sensor, chain_seed)
+                if shared is None:
+                    rec = job.recording
+                    label = f"{rec.source} ({rec.recording_id})"
+                    shared = SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label)
+                arrays = _compute(shared, job, sensor, chain_seed)
                 source = "computed"
                 if path is not None:
                     with atomic_path(path) as tmp, tmp.open("wb") as handle:
                         np.savez(handle, values=arrays[0], acquisition=arrays[1], window=arrays[2])
             block = FeatureBlock(job.recording.recording_id, sensor.name, repeat, *arrays, source)
-            done[chain_seed] = block
+            done[(sensor.name, chain_seed)] = block
             blocks.append(block)
     return out
 

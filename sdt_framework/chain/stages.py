@@ -170,10 +170,13 @@ class WhiteNoise:
         """Add the noise of each row's acquisition id (nothing if ``ctx.noise`` is False)."""
         if not ctx.noise:
             return x
-        if len(ctx.acquisition_ids) != x.shape[0]:
-            raise ValueError(f"{len(ctx.acquisition_ids)} acquisition ids for {x.shape[0]} rows")
-        z = np.stack([rng(ctx.seed, i).standard_normal(x.shape[-1]) for i in ctx.acquisition_ids])
-        return x + self.sigma_g * z
+        return x + self.sigma_g * self.draws(x.shape, ctx)
+
+    def draws(self, shape: tuple[int, ...], ctx: RunContext) -> Batch:
+        """Unit-variance draws of each row: row i from its acquisition id's generator."""
+        if len(ctx.acquisition_ids) != shape[0]:
+            raise ValueError(f"{len(ctx.acquisition_ids)} acquisition ids for {shape[0]} rows")
+        return np.stack([rng(ctx.seed, i).standard_normal(shape[-1]) for i in ctx.acquisition_ids])
 
 
 @dataclass(frozen=True)
