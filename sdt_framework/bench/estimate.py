@@ -85,7 +85,7 @@ def format_duration(seconds: float) -> str:
 
 
 def _windows(recording: Recording, sensor: SensorSpec, window_s: float, settle_s: float) -> int:
-    rate = sensor.sampling_rate_hz
+    rate = float(sensor.at_rate(recording.sampling_rate_hz).sampling_rate_hz)
     ratio = rate / recording.sampling_rate_hz
     samples = int((recording.samples_per_acquisition - 1) * ratio) + 1
     usable = samples - samples_for(settle_s, rate)
