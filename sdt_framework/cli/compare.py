@@ -8,8 +8,8 @@ from typing import Annotated, Any
 
 import numpy as np
 import typer
-from rich.markup import escape
 from rich.table import Table
+from rich.text import Text
 
 from ..errors import SDTError
 from .common import console, print_json
@@ -194,7 +194,7 @@ def compare(
         )
         return
     _print_tables(comparison)
-    console.print("[bold]Verdict[/]")
-    for finding in findings:
-        console.print(f"[bold]{escape(finding.scope)}[/]: {escape(finding.text)}", highlight=False)
+    console.print(Text("Verdict", style="bold"))
+    for finding in findings:  # user strings (sensor names) are printed as given
+        console.print(Text.assemble((finding.scope, "bold"), ": ", finding.text), highlight=False)
     console.print(f"comparison table: {csv_path}", highlight=False, soft_wrap=True)
