@@ -26,6 +26,7 @@ from .errors import SDTError
 from .parts import PartSpec, all_modes, resolve
 from .registry import Registry, build_registry
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
+from .stages import StageContext, StageSpec
 
 __all__ = ["ConformanceError", "check_plugin", "check_spec"]
 
@@ -107,6 +108,28 @@ def _check_classifier(spec: ClassifierSpec) -> None:
         _fail(spec, "cannot separate two well-separated Gaussian blobs")
 
 
+def _check_stage(spec: StageSpec) -> None:
+    """The stage builds from its example, keeps rows and input, is finite and reproducible."""
+    from .chain import RunContext
+
+    rates = {"digital": (1000.0, 1000.0)}.get(spec.domain, (20000.0, 1000.0))
+    context = StageContext(rates[0], 20000.0, 1000.0, 2.0, f"{spec.name}.0", "conformance")
+    stage = spec.factory(spec.params.model_validate(spec.example), context)
+    t = np.arange(int(rates[0])) / rates[0]
+    x = 0.5 * np.sin(2 * np.pi * 80.0 * t)[None, :].repeat(2, axis=0)
+    before = x.copy()
+    ctx = RunContext(seed=1, acquisition_ids=(0, 1), threads=1)
+    y, y2 = stage.apply(x, ctx), stage.apply(x, ctx)
+    if not np.array_equal(x, before):
+        _fail(spec, "apply modified its input")
+    if y.ndim != 2 or y.shape[0] != 2 or not np.all(np.isfinite(y)):
+        _fail(spec, f"apply returned shape {y.shape} or non-finite values")
+    if stage.fs_out != (rates[1] if spec.domain != "analog" else rates[0]):
+        _fail(spec, f"fs_out {stage.fs_out} does not match its domain {spec.domain}")
+    if not np.array_equal(y, y2):
+        _fail(spec, "the same seed gave different outputs")
+
+
 def _check_dataset(spec: DatasetSpec) -> None:
     if spec.requires_path:
         return  # needs user data; its loader is exercised by the plugin's own tests
@@ -125,6 +148,7 @@ _CHECKS: dict[type[Spec], Callable[[Any], None]] = {
     ClassifierSpec: _check_classifier,
     DatasetSpec: _check_dataset,
     PartSpec: _check_part,
+    StageSpec: _check_stage,
 }
 
 
@@ -155,6 +179,7 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
         *fresh.classifiers(),
         *fresh.datasets(),
         *fresh.parts(),
+        *fresh.stages(),
     ]
     if not specs:
         raise ConformanceError(f"plugin {info.name!r} registers nothing")
@@ -165,6 +190,7 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
         ClassifierSpec: installed.classifiers(),
         DatasetSpec: installed.datasets(),
         PartSpec: installed.parts(),
+        StageSpec: installed.stages(),
     }
     taken[SensorSpec] += installed.parts()  # one namespace: a part is used where a sensor is
     taken[PartSpec] += installed.sensors()

@@ -70,3 +70,17 @@ def register_parts(register: Register) -> None:
     ``registry.sensor("adxl355[range=8g]")``. Its name may not equal a sensor
     profile's.
     """
+
+
+@hookspec
+def register_stages(register: Register) -> None:
+    """Provide chain stages (``sdt_framework.stages.StageSpec``).
+
+    Called once when a registry is built. Call ``register(StageSpec(...))``
+    for each stage: its name, a pydantic model of its parameters (units in the
+    field descriptions), where it runs (``domain`` analog or digital,
+    ``where`` before or after an ``anchor`` built-in stage, or ``sampler``)
+    and ``factory(params, context)``, which builds the stage object. A sensor
+    profile adds it by listing ``{name = "...", params = {...}}`` in its
+    ``stages``.
+    """

@@ -24,6 +24,8 @@ from .errors import DuplicateNameError, PluginLoadError, UnknownNameError, valid
 from .parts import PartSpec, resolve, split_name
 from .sensor_files import load_sensor_file, sensor_files_from_env
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
+from .stages.bind import bind_stages
+from .stages.spec import StageSpec
 
 __all__ = ["HOOKS", "Registry", "build_registry"]
 
@@ -36,6 +38,7 @@ HOOKS: dict[str, type[Spec]] = {
     "register_classifiers": ClassifierSpec,
     "register_datasets": DatasetSpec,
     "register_parts": PartSpec,
+    "register_stages": StageSpec,
 }
 #: kinds that share one namespace: a part is used where a sensor is
 _SAME_NAMES = {SensorSpec: PartSpec, PartSpec: SensorSpec}
@@ -220,10 +223,10 @@ class Registry:
         defaults filled in (``adxl355`` -> ``adxl355[odr=4000,range=2g]``).
         """
         if name in self._items[SensorSpec] or (SensorSpec, name) in self._conflicts:
-            return self._get(SensorSpec, name)
+            return self.bind(self._get(SensorSpec, name))
         base, modes = split_name(name)
         if base in self._items[PartSpec] or (PartSpec, base) in self._conflicts:
-            return resolve(self.part(base), modes).sensor
+            return self.bind(resolve(self.part(base), modes).sensor)
         note = self.filter_note
         if modes and base in self._items[SensorSpec]:
             raise UnknownNameError("part", base, self._items[PartSpec], note=note)
@@ -231,8 +234,23 @@ class Registry:
         raise UnknownNameError("sensor", name, known, note=note)
 
     def sensors(self) -> list[SensorSpec]:
-        """All sensor profiles, sorted by name (parts: :meth:`parts`)."""
-        return self._all(SensorSpec)
+        """All sensor profiles, sorted by name (parts: :meth:`parts`), stages bound."""
+        return [self.bind(sensor) for sensor in self._all(SensorSpec)]
+
+    def bind(self, sensor: SensorSpec) -> SensorSpec:
+        """``sensor`` with its listed stages bound to the stages registered here.
+
+        Unknown stage names and parameters a stage rejects are one-line errors.
+        """
+        return bind_stages(sensor, self._items[StageSpec])  # type: ignore[arg-type]
+
+    def stage(self, name: str) -> StageSpec:
+        """The chain stage called ``name``."""
+        return self._get(StageSpec, name)
+
+    def stages(self) -> list[StageSpec]:
+        """All chain stages, sorted by name."""
+        return self._all(StageSpec)
 
     def part(self, name: str) -> PartSpec:
         """The part called ``name`` (without a mode)."""

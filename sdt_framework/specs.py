@@ -17,6 +17,8 @@ from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
+from .stage_use import StageUse, Tolerance
+
 __all__ = [
     "ClassifierSpec",
     "DatasetSpec",
@@ -37,6 +39,8 @@ NATIVE = "native"
 Axis = Literal["x", "y", "z"]
 #: SensorSpec fields that may differ per axis (``SensorSpec.per_axis``)
 AXIS_FIELDS = ("noise_density_ug_rthz", "mech_cutoff_hz")
+#: annotations of the SensorSpec fields a tolerance may apply to
+_NUMERIC = (float, float | None, int, int | None)
 #: bytes per value of each on-node feature dtype
 DTYPE_BYTES = {"float16": 2, "float32": 4}
 
@@ -90,7 +94,7 @@ class SensorSpec(Spec):
 
     kind: ClassVar[str] = "sensor"
     #: left out of the content hash while unset: existing profiles keep their hashes
-    _hash_if_set: ClassVar[frozenset[str]] = frozenset({"per_axis"})
+    _hash_if_set: ClassVar[frozenset[str]] = frozenset({"per_axis", "stages", "tolerances"})
 
     sampling_rate_hz: Annotated[float, Field(gt=0)] | Literal["native"] = Field(
         description="Output data rate F_target, Hz; 'native': the recording's own rate."
@@ -131,6 +135,12 @@ class SensorSpec(Spec):
         description="Per-axis values of noise_density_ug_rthz / mech_cutoff_hz where the "
         "datasheet gives them; the fields above are the X axis.",
     )
+    stages: tuple[StageUse, ...] = Field(
+        default=(), description="Extra chain stages (plugins), e.g. offset, gauss-markov."
+    )
+    tolerances: dict[str, Tolerance] = Field(
+        default_factory=dict, description="Unit-to-unit spread of numeric fields above."
+    )
 
     @field_validator("name")
     @classmethod
@@ -168,6 +178,9 @@ class SensorSpec(Spec):
         for axis, values in (self.per_axis or {}).items():
             if set(values) - set(AXIS_FIELDS) or min(values.values(), default=1) <= 0:
                 raise ValueError(f"per_axis.{axis}: only {AXIS_FIELDS}, positive: {values}")
+        numeric = {k for k, f in type(self).model_fields.items() if f.annotation in _NUMERIC}
+        for key in set(self.tolerances) - numeric:
+            raise ValueError(f"tolerances.{key}: not a numeric field; use one of {sorted(numeric)}")
         return self
 
     def at_rate(self, fs: float) -> SensorSpec:
@@ -180,18 +193,22 @@ class SensorSpec(Spec):
         """This profile on ``axis`` ('x', 'y' or 'z'): that axis's datasheet figures, if any."""
         if axis not in ("x", "y", "z"):
             raise ValueError(f"axis must be 'x', 'y' or 'z', got {axis!r}")
-        values = (self.per_axis or {}).get(axis)  # type: ignore[call-overload]
-        if not values:
-            return self
-        current = {key: getattr(self, key) for key in values}
-        return self if current == values else self.model_copy(update=dict(values))
+        values = (self.per_axis or {}).get(axis) or {}  # type: ignore[call-overload]
+        stages = tuple(use.for_axis(axis) for use in self.stages)
+        update: dict[str, Any] = {} if stages == self.stages else {"stages": stages}
+        if values and {key: getattr(self, key) for key in values} != values:
+            update.update(values)
+        return self.model_copy(update=update) if update else self
 
     def content_dict(self) -> dict[str, Any]:
         """Behaviour-defining fields (provenance and unset optional fields excluded)."""
         data = super().content_dict()
         for key in self._hash_if_set:
-            if data.get(key) is None:
+            if not data.get(key):
                 data.pop(key, None)
+        for use, entry in zip(self.stages, data.get("stages", ()), strict=False):
+            if use.spec is not None:  # the implementation bound to the name
+                entry["impl"] = use.spec.content_hash()
         return data
 
     @property

@@ -18,8 +18,9 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..api import check_real, check_seed, resolve
+from ..api import check_real, check_seed, default_registry, resolve
 from ..specs import SensorSpec
+from ..stages import build_extra, place
 from .errors import check_rates, check_signal
 from .filters import design_lowpass
 from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise
@@ -36,29 +37,35 @@ def build_stages(sensor: SensorSpec, fs: float) -> tuple[Stage, ...]:
     the rate it runs at (documented skip rule), the sampling stage when the target rate
     equals ``fs`` (interpolating on the same grid is the identity), the
     quantiser when ``sensor.requantise`` is False. The noise stage is kept when
-    ``inject_noise`` is True; a call can still switch it off.
+    ``inject_noise`` is True; a call can still switch it off. The profile's
+    extra stages (bound to their specs) are placed against these by
+    :func:`sdt_framework.stages.place`.
     """
     sensor = sensor.at_rate(fs)
     target = float(sensor.sampling_rate_hz)
-    stages: list[Stage] = []
+    own: dict[str, Stage] = {}
     for name, order, cutoff in (
         ("mechanical", sensor.mech_order, sensor.mech_cutoff_hz),
         ("analog", sensor.analog_order, sensor.analog_cutoff_hz),
     ):
         sos = None if cutoff is None else design_lowpass(order, cutoff, fs)
         if sos is not None:
-            stages.append(LowPass(name, fs, sos))
+            own[name] = LowPass(name, fs, sos)
     if target != fs:
-        stages.append(Sample(fs, target))
+        own["sample"] = Sample(fs, target)
     if sensor.inject_noise and sensor.noise_density_ug_rthz > 0:
-        stages.append(WhiteNoise(target, sensor.noise_density_ug_rthz))
+        own["noise"] = WhiteNoise(target, sensor.noise_density_ug_rthz)
     if sensor.digital_cutoff_hz is not None and sensor.digital_order is not None:
         sos = design_lowpass(sensor.digital_order, sensor.digital_cutoff_hz, target)
         if sos is not None:
-            stages.append(LowPass("digital", target, sos))
+            own["digital"] = LowPass("digital", target, sos)
     if sensor.requantise and sensor.full_scale_g is not None and sensor.adc_bits is not None:
-        stages.append(Quantise(target, sensor.full_scale_g, sensor.adc_bits))
-    return tuple(stages)
+        own["quantise"] = Quantise(target, sensor.full_scale_g, sensor.adc_bits)
+    if not sensor.stages:
+        return tuple(own.values())
+    if any(use.spec is None for use in sensor.stages):
+        raise ValueError(f"sensor {sensor.name!r}: its stages are not bound; use compile_chain")
+    return tuple(place(own, build_extra(sensor, fs)))
 
 
 def _fuse(stages: Sequence[Stage]) -> tuple[Stage, ...]:
@@ -148,9 +155,13 @@ def compile_chain(sensor: SensorSpec, fs: float, *, label: str = "") -> Chain:
 
     A sensor at the 'native' rate takes ``fs`` as its rate. Raises
     :class:`~sdt_framework.chain.ChainInputError` if the target rate is above
-    ``fs`` or the digital cutoff is at or above the target Nyquist.
+    ``fs`` or the digital cutoff is at or above the target Nyquist. Stages the
+    profile lists that no registry bound yet (a profile built in Python) are
+    bound to :func:`~sdt_framework.api.default_registry`'s.
     """
     fs = check_rates(fs, sensor, label)
+    if any(use.spec is None for use in sensor.stages):
+        sensor = default_registry().bind(sensor)
     return _compile(_ByContent(sensor.at_rate(fs)), fs)
 
 

@@ -126,3 +126,46 @@ def test_hook_register_parts():
     sensor = registry.sensor("tiny-part[range=4g]")
     assert (sensor.name, sensor.full_scale_g) == ("tiny-part[range=4g]", 4)
     assert sensor.distribution == "(in-process)"
+
+
+def test_hook_register_stages():
+    from pydantic import BaseModel, ConfigDict
+
+    from sdt_framework.stages import StageSpec
+
+    class Gain(BaseModel):
+        model_config = ConfigDict(extra="forbid")
+        gain: float = 2.0
+
+    class Multiply:
+        def __init__(self, params, context):
+            self.name, self.fs_in, self.fs_out, self.gain = (
+                context.label,
+                context.fs,
+                context.fs,
+                params.gain,
+            )
+
+        def apply(self, x, ctx):
+            return x * self.gain
+
+    spec = StageSpec(name="times", domain="digital", params=Gain, factory=Multiply)
+    registry = build_registry(entry_points=False, plugins=[plugin_with("register_stages", spec)])
+    assert registry.stage("times").plugin == "p_register_stages"
+    sensor = registry.bind(
+        SensorSpec(
+            name="tiny",
+            sampling_rate_hz=100,
+            full_scale_g=2,
+            adc_bits=8,
+            noise_density_ug_rthz=0,
+            mech_cutoff_hz=None,
+            analog_cutoff_hz=None,
+            requantise=False,
+            stages=[{"name": "times", "params": {"gain": 3}}],
+        )
+    )
+    from sdt_framework.chain import degrade
+
+    y, _ = degrade(np.ones(100), 100.0, sensor)
+    assert np.array_equal(y, np.full(100, 3.0))

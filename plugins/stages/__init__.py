@@ -1,0 +1,1 @@
+"""Built-in chain stages: the error terms datasheets specify (registered like any plugin)."""
