@@ -94,7 +94,7 @@ class SensorSpec(Spec):
 
     kind: ClassVar[str] = "sensor"
     #: left out of the content hash while unset: existing profiles keep their hashes
-    _hash_if_set: ClassVar[frozenset[str]] = frozenset({"per_axis", "stages", "tolerances"})
+    _hash_if_set: ClassVar[frozenset[str]] = frozenset({"per_axis", "stages"})
 
     sampling_rate_hz: Annotated[float, Field(gt=0)] | Literal["native"] = Field(
         description="Output data rate F_target, Hz; 'native': the recording's own rate."
@@ -139,7 +139,10 @@ class SensorSpec(Spec):
         default=(), description="Extra chain stages (plugins), e.g. offset, gauss-markov."
     )
     tolerances: dict[str, Tolerance] = Field(
-        default_factory=dict, description="Unit-to-unit spread of numeric fields above."
+        default_factory=dict,
+        description="Unit-to-unit spread of a numeric field, or of 'stage.parameter' (the "
+        "stage is added to a drawn unit if the profile does not list it). Not hashed: the "
+        "nominal chain does not depend on it.",
     )
 
     @field_validator("name")
@@ -179,8 +182,11 @@ class SensorSpec(Spec):
             if set(values) - set(AXIS_FIELDS) or min(values.values(), default=1) <= 0:
                 raise ValueError(f"per_axis.{axis}: only {AXIS_FIELDS}, positive: {values}")
         numeric = {k for k, f in type(self).model_fields.items() if f.annotation in _NUMERIC}
-        for key in set(self.tolerances) - numeric:
-            raise ValueError(f"tolerances.{key}: not a numeric field; use one of {sorted(numeric)}")
+        for key in {k for k in self.tolerances if "." not in k} - numeric:
+            raise ValueError(
+                f"tolerances.{key}: not a numeric field; use one of {sorted(numeric)} "
+                f"or 'stage.parameter'"
+            )
         return self
 
     def at_rate(self, fs: float) -> SensorSpec:
@@ -203,6 +209,9 @@ class SensorSpec(Spec):
     def content_dict(self) -> dict[str, Any]:
         """Behaviour-defining fields (provenance and unset optional fields excluded)."""
         data = super().content_dict()
+        data.pop("tolerances", None)  # only drawn units use them, and a unit drops them
+        for entry in data.get("stages", ()):
+            entry.pop("tolerances", None)
         for key in self._hash_if_set:
             if not data.get(key):
                 data.pop(key, None)

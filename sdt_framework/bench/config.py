@@ -84,6 +84,11 @@ class BenchmarkConfig(BaseModel):
         default=None, description="CSV/TOML allocation table replacing the scenario rule."
     )
     repeats: int = Field(default=10, ge=1, description="Repetitions N (noise and seeds).")
+    units: int | None = Field(
+        default=None,
+        ge=1,
+        description="Physical units per sensor drawn from its tolerances (None: nominal only).",
+    )
     seed: int = Field(default=0, ge=0, description="Base seed.")
     jobs: int = Field(default=-1, description="Parallel processes (-1: all cores).")
     backend: Literal["local", "dask"] = Field(default="local", description="Execution engine.")

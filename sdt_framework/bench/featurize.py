@@ -36,6 +36,7 @@ from ..features import extract
 from ..io import atomic_path
 from ..seeding import derive_seed
 from ..specs import FeatureSetSpec, SensorSpec
+from ..stages import draw_unit, has_tolerances, is_random
 
 __all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurize_recording", "noise_seed"]
 
@@ -53,6 +54,7 @@ class FeatureBlock:
     acquisition: np.ndarray
     window: np.ndarray
     source: str  # computed | cached (read from disk) | shared (deterministic chain)
+    unit: int = -1  # physical unit drawn from the tolerances; -1: the nominal profile
 
 
 @dataclass
@@ -77,11 +79,12 @@ class FeatureJob:
     settle_s: float
     cache_dir: str | None
     axis: str = "x"  # the sensor axis this recording's channel is mounted on
+    units: int | None = None  # physical units per sensor (None: the nominal profile only)
 
 
 def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) -> int | None:
     """The chain seed of one repetition, or None for a chain without randomness."""
-    if not sensor.inject_noise or sensor.noise_density_ug_rthz == 0:
+    if not is_random(sensor):
         return None
     return derive_seed(seed, "noise", repeat, recording_id)
 
@@ -122,7 +125,25 @@ def _compute(shared: SharedPrefix, job: FeatureJob, sensor: SensorSpec, chain_se
     return table.values, table.acquisition, table.window
 
 
-def _by_prefix(job: FeatureJob) -> list[list[SensorSpec]]:
+def _variants(job: FeatureJob) -> list[tuple[SensorSpec, int]]:
+    """(sensor as run, unit) pairs: the nominal profile, or each drawn unit of it.
+
+    With ``job.units`` set, unit k of each sensor is drawn from its tolerances
+    (:func:`sdt_framework.stages.draw_unit`, seeded by the base seed, the
+    sensor's base name and k); a sensor without tolerances has identical
+    units: only unit 0 is run and the others repeat its blocks.
+    """
+    if job.units is None:
+        return [(named.for_axis(job.axis), -1) for named in job.sensors]
+    return [
+        (draw_unit(named, job.seed, unit).for_axis(job.axis), unit)
+        for named in job.sensors
+        for unit in range(job.units)
+        if unit == 0 or has_tolerances(named)
+    ]
+
+
+def _by_prefix(job: FeatureJob) -> list[list[tuple[SensorSpec, int]]]:
     """The job's sensors (with their axis's figures), in groups of equal recording-rate prefix.
 
     Sensors whose mechanical and analog stages are equal (sweep points that
@@ -130,10 +151,9 @@ def _by_prefix(job: FeatureJob) -> list[list[SensorSpec]]:
     by repetition, their sampled signals and noise draws (``chain.shared``).
     """
     fs = job.recording.sampling_rate_hz
-    groups: dict[str, list[SensorSpec]] = {}
-    for named in job.sensors:
-        sensor = named.for_axis(job.axis)  # the name stays
-        groups.setdefault(prefix_key(sensor, fs), []).append(sensor)
+    groups: dict[str, list[tuple[SensorSpec, int]]] = {}
+    for sensor, unit in _variants(job):  # the name stays
+        groups.setdefault(prefix_key(sensor, fs), []).append((sensor, unit))
     return list(groups.values())
 
 
@@ -154,17 +174,19 @@ def _read_cached(path: Path, n_features: int) -> tuple[np.ndarray, ...]:
 
 
 def featurize_recording(job: FeatureJob) -> RecordingFeatures:
-    """Features of one recording for every (sensor, repetition) of the job."""
+    """Features of one recording for every (sensor, unit, repetition) of the job."""
     shared: SharedPrefix | None = None  # the recording, read on first need
     out = RecordingFeatures()
     blocks = out.blocks
     n_features = len(job.feature_set.feature_names)
-    done: dict[tuple[str, int | None], FeatureBlock] = {}
+    done: dict[tuple[str, int, int | None], FeatureBlock] = {}
     for group, repeat in ((g, r) for g in _by_prefix(job) for r in range(job.repeats)):
-        for sensor in group:
+        for sensor, unit in group:
             chain_seed = noise_seed(sensor, job.seed, repeat, job.recording.recording_id)
-            if (sensor.name, chain_seed) in done:  # deterministic chain: same every repetition
-                blocks.append(_with_repeat(done[(sensor.name, chain_seed)], repeat))
+            if (sensor.name, unit, chain_seed) in done:  # deterministic: same every repetition
+                blocks.append(
+                    _relabel(done[(sensor.name, unit, chain_seed)], repeat, unit, "shared")
+                )
                 continue
             key = _key(job, sensor, chain_seed)
             path = _cache_path(job, key)
@@ -189,13 +211,50 @@ def featurize_recording(job: FeatureJob) -> RecordingFeatures:
                 if path is not None:
                     with atomic_path(path) as tmp, tmp.open("wb") as handle:
                         np.savez(handle, values=arrays[0], acquisition=arrays[1], window=arrays[2])
-            block = FeatureBlock(job.recording.recording_id, sensor.name, repeat, *arrays, source)
-            done[(sensor.name, chain_seed)] = block
+            block = FeatureBlock(
+                job.recording.recording_id, sensor.name, repeat, *arrays, source, unit
+            )
+            done[(sensor.name, unit, chain_seed)] = block
             blocks.append(block)
+    if job.units is not None:  # units of a sensor without tolerances: unit 0's blocks
+        same = {n.name for n in job.sensors if not has_tolerances(n)}
+        firsts = [b for b in blocks if b.unit == 0 and b.sensor in same]
+        blocks += [_relabel(b, b.repeat, u, "shared") for u in range(1, job.units) for b in firsts]
     return out
 
 
-def _with_repeat(block: FeatureBlock, repeat: int) -> FeatureBlock:
+def _sensor_blocks(
+    job: FeatureJob, sensor: SensorSpec, unit: int, loaded: list[np.ndarray]
+) -> list[FeatureBlock]:
+    """Every repetition of one sensor (one unit of it) on the job's recording."""
+    blocks: list[FeatureBlock] = []
+    done: dict[int | None, FeatureBlock] = {}
+    for repeat in range(job.repeats):
+        chain_seed = noise_seed(sensor, job.seed, repeat, job.recording.recording_id)
+        if chain_seed in done:  # deterministic chain: identical for every repetition
+            blocks.append(_relabel(done[chain_seed], repeat, unit, "shared"))
+            continue
+        key = _key(job, sensor, chain_seed)
+        path = _cache_path(job, key)
+        if path is not None and path.exists():
+            with np.load(path) as stored:
+                arrays = (stored["values"], stored["acquisition"], stored["window"])
+            source = "cached"
+        else:
+            if not loaded:
+                loaded.append(job.recording.load())
+            arrays = _compute(job, loaded[0], sensor, chain_seed)
+            source = "computed"
+            if path is not None:
+                with atomic_path(path) as tmp, tmp.open("wb") as handle:
+                    np.savez(handle, values=arrays[0], acquisition=arrays[1], window=arrays[2])
+        block = FeatureBlock(job.recording.recording_id, sensor.name, repeat, *arrays, source, unit)
+        done[chain_seed] = block
+        blocks.append(block)
+    return blocks
+
+
+def _relabel(block: FeatureBlock, repeat: int, unit: int, source: str) -> FeatureBlock:
     return FeatureBlock(
         block.recording_id,
         block.sensor,
@@ -203,5 +262,6 @@ def _with_repeat(block: FeatureBlock, repeat: int) -> FeatureBlock:
         block.values,
         block.acquisition,
         block.window,
-        "shared",
+        source,
+        unit,
     )

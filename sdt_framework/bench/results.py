@@ -1,11 +1,12 @@
 """Tidy result tables and the paper's Table 4 pivot, written atomically.
 
 ``results`` has one row per run (dataset, machine, scenario, sensor,
-feature_set, classifier, repeat, seed, macro_f1, n_train, n_test, fit_seconds,
-status, error); ``per_class``, ``confusion`` and ``per_recording`` (confusion
-counts per test recording) are long tables keyed by the same run columns.
-``table4`` is mean +/- SD (sample SD, ddof=1) of Macro F1 with scenario
-blocks, sensor rows and machine x classifier columns.
+feature_set, classifier, repeat, unit (-1: the nominal profile), seed,
+macro_f1, n_train, n_test, fit_seconds, status, error); ``per_class``,
+``confusion`` and ``per_recording`` (confusion counts per test recording) are
+long tables keyed by the same run columns. ``table4`` is mean +/- SD (sample
+SD, ddof=1) of Macro F1 with scenario blocks, sensor rows and machine x
+classifier columns.
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ RUN_COLUMNS = [
     "feature_set",
     "classifier",
     "repeat",
+    "unit",
     "seed",
 ]
 RESULT_COLUMNS = [*RUN_COLUMNS, "macro_f1", "n_train", "n_test", "fit_seconds", "status", "error"]
@@ -53,7 +55,7 @@ def tidy(runs: Iterable[RunResult]) -> tuple[pd.DataFrame, pd.DataFrame, pd.Data
     """(results, per_class, confusion) long tables from run results."""
     rows, per_class, confusion = [], [], []
     for run in runs:
-        keys = {c: run.labels[c] for c in RUN_COLUMNS}
+        keys = {c: run.labels.get(c, -1) if c == "unit" else run.labels[c] for c in RUN_COLUMNS}
         rows.append(
             {
                 **keys,
@@ -72,7 +74,7 @@ def tidy(runs: Iterable[RunResult]) -> tuple[pd.DataFrame, pd.DataFrame, pd.Data
                     {**keys, "true": true, "predicted": predicted, "count": run.confusion[i][j]}
                 )
     results = pd.DataFrame(rows, columns=RESULT_COLUMNS)
-    order = ["machine", "scenario", "sensor", "classifier", "repeat"]
+    order = ["machine", "scenario", "sensor", "classifier", "unit", "repeat"]
     results = results.sort_values(order, ignore_index=True)
     return (
         results,

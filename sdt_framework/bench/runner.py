@@ -95,7 +95,8 @@ def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
     position = {r.recording_id: i for i, r in enumerate(plan.recordings)}
     sensor_position = {s.name: i for i, s in enumerate(plan.sensors)}
     blocks = sorted(
-        blocks, key=lambda b: (position[b.recording_id], sensor_position[b.sensor], b.repeat)
+        blocks,
+        key=lambda b: (position[b.recording_id], sensor_position[b.sensor], b.unit, b.repeat),
     )
     frames = []
     for b in blocks:
@@ -112,6 +113,8 @@ def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
             "sensor": b.sensor,
             "repeat": b.repeat,
         }
+        if plan.config.units is not None:  # left out otherwise: features.parquet stays as it was
+            meta["unit"] = b.unit
         for i, (name, value) in enumerate(meta.items()):
             frame.insert(i, name, value)
         frame.insert(len(meta), "acquisition", b.acquisition)
@@ -132,7 +135,9 @@ def _tasks(plan: Plan, features: pd.DataFrame, done: set[str]):
         classes = tuple(sorted(part["condition"].unique()))
         code = {c: i for i, c in enumerate(classes)}
         rows = features[(features["machine"] == machine) & features["run"].isin(side)]
-        for (sensor_name, repeat), sub in rows.groupby(["sensor", "repeat"], sort=True):
+        by = ["sensor", "repeat"] if config.units is None else ["sensor", "unit", "repeat"]
+        for group, sub in rows.groupby(by, sort=True):
+            sensor_name, repeat = group[0], group[-1]
             is_train = sub["run"].map(side).eq("train").to_numpy()
             x = sub[names].to_numpy()
             y = sub["condition"].map(code).to_numpy()
@@ -149,6 +154,8 @@ def _tasks(plan: Plan, features: pd.DataFrame, done: set[str]):
                     "repeat": int(repeat),
                     "seed": seed,
                 }
+                if config.units is not None:  # nominal runs keep their keys
+                    labels["unit"] = int(group[1])
                 key = _run_key(plan, labels, sensor, clf, part)
                 yield (
                     key,
@@ -226,6 +233,7 @@ def run_benchmark(
             config.settle_s,
             str(cache_dir),
             config.axes.get(r.channel, "x"),
+            config.units,
         )
         for r in plan.recordings
     ]

@@ -146,6 +146,9 @@ def benchmark(
         None, "--allocation", help="CSV/TOML train/test table replacing the scenario rule."
     ),
     repeats: int | None = typer.Option(None, "--repeats", help="Repetitions N (default 10)."),
+    units: int | None = typer.Option(
+        None, "--units", help="Physical units per sensor, drawn from its tolerances."
+    ),
     seed: int | None = typer.Option(None, "--seed", help="Base seed (default 0)."),
     out: Path | None = typer.Option(
         None, "--out", help="Output folder (default results/<timestamp>); reuse it to resume."
@@ -181,6 +184,8 @@ def benchmark(
       sdt benchmark --quick --sensors "adxl355\\[range=8g],iis3dwb,mpu6050"
 
       sdt benchmark --data /data/NLN-EMP --out results/nln --jobs 2
+
+      sdt benchmark --quick --units 5 --sensor-file my_units.toml --sensors my-adxl345
     """
     # Imported here so that `sdt --help` and the listing commands start fast.
     from ..bench.config import load_config
@@ -198,6 +203,7 @@ def benchmark(
         "channels": _names(channels),
         "allocation": allocation,
         "repeats": repeats,
+        "units": units,
         "seed": seed,
         "jobs": jobs,
         "backend": backend,

@@ -56,6 +56,9 @@ def bind_stages(sensor: SensorSpec, table: Mapping[str, StageSpec]) -> SensorSpe
         return sensor
     bound = []
     for use in sensor.stages:
+        if use.spec is not None:  # bound already (by the registry the profile came from)
+            bound.append(use)
+            continue
         spec = table.get(use.name)
         if spec is None:
             raise UnknownNameError("stage", use.name, table, note=f"(listed by {sensor.name!r})")

@@ -17,7 +17,7 @@ from pydantic import ValidationError
 from ..errors import SDTError, validation_summary
 from ..seeding import rng
 from ..specs import MODE_SUFFIX, POINT_SUFFIX, SensorSpec
-from ..stage_use import Tolerance
+from ..stage_use import StageUse, Tolerance
 
 __all__ = ["base_name", "draw", "draw_unit", "has_tolerances"]
 
@@ -50,6 +50,10 @@ def has_tolerances(sensor: SensorSpec) -> bool:
 def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
     """Unit ``k`` of ``sensor``: every toleranced value drawn, tolerances dropped.
 
+    A tolerance ``"stage.parameter"`` applies to the listed stage of that
+    name, or adds the stage (nominal value 0) to the unit when the profile
+    does not list it: a profile's nominal chain stays as it is.
+
     A sensor without tolerances is returned as it is (every unit is nominal).
     A drawn value the model refuses (a negative noise density) is a one-line
     :class:`~sdt_framework.errors.SDTError` asking for a smaller spread.
@@ -58,7 +62,15 @@ def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
         return sensor
     base = base_name(sensor.name)
     update: dict[str, Any] = {"tolerances": {}}
+    added: dict[str, dict[str, float]] = {}
     for key in sorted(sensor.tolerances):
+        stage, _, param = key.partition(".")
+        if param:  # a stage's parameter: on the listed stage, or on one added to the unit
+            listed = [use for use in sensor.stages if use.name == stage]
+            nominal = float(listed[0].params.get(param, 0.0)) if listed else 0.0
+            value = draw(sensor.tolerances[key], nominal, seed, "unit", base, k, key)
+            added.setdefault(stage, {})[param] = value
+            continue
         nominal = float(getattr(sensor, key))
         update[key] = draw(sensor.tolerances[key], nominal, seed, "unit", base, k, key)
     stages = []
@@ -69,7 +81,9 @@ def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
             params[key] = draw(
                 use.tolerances[key], float(params[key]), seed, "unit", base, k, where
             )
+        params.update(added.pop(use.name, {}))
         stages.append(use.model_copy(update={"params": params, "tolerances": {}}))
+    stages += [StageUse(name=name, params=params) for name, params in sorted(added.items())]
     update["stages"] = tuple(stages)
     data = {**sensor.model_dump(), **update}
     try:
@@ -80,6 +94,8 @@ def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
             f"({validation_summary(exc)}); lower its tolerance's spread"
         ) from None
     unit = unit.model_copy(update={"stages": tuple(stages)})
+    if any(use.spec is None for use in unit.stages):
+        return unit  # bound (and checked) when its chain is compiled
     for use in unit.stages:
         if use.spec is not None:
             try:
