@@ -13,6 +13,7 @@ from ..io import atomic_write_text
 from .document import Block, Code, Heading, Items, Paragraph, Table
 from .edge import edge_blocks
 from .exploration import exploration_blocks
+from .units import unit_blocks
 from .figures import draw_figures
 from .load import ResultsFolder, load_results
 from .render import render_html, render_markdown
@@ -127,6 +128,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     )
     if not folder.failed.empty:
         blocks += [Heading("Failed runs", 2), failed_table(folder.failed)]
+    blocks += unit_blocks(folder)
     blocks += exploration_blocks(folder.path)
     blocks += edge_blocks(folder, registry)
     blocks.append(Heading("Figures", 2))

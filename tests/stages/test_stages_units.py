@@ -82,3 +82,31 @@ def test_benchmark_with_units_labels_runs_and_spreads_only_toleranced_sensors(tm
 
     assert np.array_equal(unit("wilcoxon-786b10", 0), unit("wilcoxon-786b10", 2))
     assert not np.allclose(unit("adxl345", 0), unit("adxl345", 2))
+
+
+def test_report_unit_spread_separates_units_from_noise():
+    from sdt_framework.report.units import unit_spread
+
+    # unit means 0.5, 0.6, 0.7 (SD 0.1); within each unit repeats differ by +-0.02 (SD 0.02*sqrt2)
+    rows = [
+        {
+            "scenario": "forward",
+            "sensor": "s",
+            "classifier": "lr",
+            "machine": m,
+            "unit": u,
+            "repeat": r,
+            "macro_f1": 0.5 + 0.1 * u + (0.02 if r else -0.02),
+            "status": "ok",
+        }
+        for m in ("M1", "M2")
+        for u in range(3)
+        for r in range(2)
+    ]
+    import pandas as pd
+
+    spread = unit_spread(pd.DataFrame(rows)).iloc[0]
+    assert (spread.units, spread.repeats) == (3, 2)
+    assert spread["mean"] == pytest.approx(0.6)
+    assert spread.sd_units == pytest.approx(0.1)
+    assert spread.sd_noise == pytest.approx(0.04 / np.sqrt(2))
