@@ -13,12 +13,12 @@ from ..io import atomic_write_text
 from .document import Block, Code, Heading, Items, Paragraph, Table
 from .edge import edge_blocks
 from .exploration import exploration_blocks
-from .units import unit_blocks
 from .figures import draw_figures
 from .load import ResultsFolder, load_results
 from .render import render_html, render_markdown
 from .style import sensor_colors
 from .tables import allocation_table, delta_table, failed_table, table4_table
+from .units import unit_blocks
 from .verdict import verdict_blocks
 
 __all__ = ["CAPTIONS", "FORMATS", "build_blocks", "write_report"]

@@ -5,10 +5,10 @@ from __future__ import annotations
 import allantools
 import numpy as np
 import pytest
+from sdt_plugins.stages import clock, errors, noise
 
 from sdt_framework.chain import RunContext
 from sdt_framework.stages import StageContext
-from sdt_plugins.stages import clock, errors, noise
 
 ROWS = tuple(range(4))
 

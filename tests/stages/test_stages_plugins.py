@@ -9,6 +9,9 @@ import numpy as np
 import pytest
 from pydantic import BaseModel, ConfigDict, Field
 from scipy.signal import butter, sosfilt
+from sdt_plugins.sensors.adxl345 import ADXL345
+from sdt_plugins.sensors.adxl357 import ADXL357
+from sdt_plugins.sensors.wilcoxon_786b10 import WILCOXON_786B10
 
 from sdt_framework import SDTError, SensorSpec, UnknownNameError, build_registry, hookimpl
 from sdt_framework.bench.config import BenchmarkConfig
@@ -16,9 +19,6 @@ from sdt_framework.bench.runner import plan_benchmark, run_benchmark
 from sdt_framework.chain import compile_chain, degrade
 from sdt_framework.chain.shared import SharedPrefix
 from sdt_framework.stages import StageSpec
-from sdt_plugins.sensors.adxl345 import ADXL345
-from sdt_plugins.sensors.adxl357 import ADXL357
-from sdt_plugins.sensors.wilcoxon_786b10 import WILCOXON_786B10
 
 FS = 20000.0
 

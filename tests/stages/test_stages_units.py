@@ -1,17 +1,17 @@
-"""Per-unit tolerances: draws match their distributions, unit k is stable, benchmarks label units."""
+"""Per-unit tolerances: draws follow their distributions, unit k is stable, runs carry units."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 from scipy.stats import norm
+from sdt_plugins.sensors.adxl345 import ADXL345
 
 from sdt_framework import SensorSpec, build_registry
 from sdt_framework.bench.config import BenchmarkConfig
 from sdt_framework.bench.results import tidy
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
 from sdt_framework.stages import base_name, draw_unit
-from sdt_plugins.sensors.adxl345 import ADXL345
 
 SENSOR = SensorSpec.model_validate(
     {
