@@ -11,6 +11,11 @@ asserted. Prints reference samples per second and the speed-up, with all
 CPUs and with one thread (the algorithmic part: fused cascade, block-wise
 execution, index-arithmetic sampling).
 
+Then the extended chain: the ADXL345 profile with every built-in error stage
+(offset and scale with a temperature ramp, nonlinearity, Gauss-Markov, 1/f,
+random walk, VRW, extra white noise, clock error with jitter) next to the paper
+chain of the same profile, in the same run, with the throughput ratio.
+
 Run: ``.venv/bin/python benchmarks/bench_chain.py [--repeats 3]``
 """
 
@@ -36,11 +41,12 @@ SEED = 0
 
 def plain_degrade(x: NDArray[np.float64], fs: float, s: SensorSpec, seed: int) -> NDArray:
     """The chain written the obvious way: a Python loop over acquisitions."""
+    s = s.at_rate(fs)
     target = s.sampling_rate_hz
     analog = [
         butter(order, fc, fs=fs, output="sos")
         for order, fc in ((s.mech_order, s.mech_cutoff_hz), (s.analog_order, s.analog_cutoff_hz))
-        if fc < fs / 2
+        if fc is not None and fc < fs / 2
     ]
     digital = None
     if s.digital_cutoff_hz is not None and s.digital_cutoff_hz < target / 2:
@@ -49,7 +55,7 @@ def plain_degrade(x: NDArray[np.float64], fs: float, s: SensorSpec, seed: int) -
     m = int((n - 1) * target / fs) + 1
     t_in, t_out = np.arange(n) / fs, np.arange(m) / target
     sigma = s.noise_density_ug_rthz * 1e-6 * np.sqrt(target / 2)
-    step = 2.0 * s.full_scale_g / 2.0**s.adc_bits
+    step = s.quantisation_step_g
     out = []
     for i, row in enumerate(x):
         y = row.copy()
@@ -104,6 +110,45 @@ def main() -> None:
             f"{sensor.name:<18}{total / ours_t / 1e6:>15.1f}{total / one_t / 1e6:>10.1f}"
             f"{total / plain_t / 1e6:>15.1f}{plain_t / ours_t:>9.2f}x{plain_t / one_t:>9.2f}x"
         )
+
+    extended_rows(x, args.repeats)
+
+
+EXTENDED = [
+    {
+        "name": "offset",
+        "params": {
+            "offset_mg": 20,
+            "tempco_mg_per_c": 0.4,
+            "temperature": {"kind": "ramp", "rate_c_per_s": 0.5},
+        },
+    },
+    {"name": "scale", "params": {"error_pct": 2, "tempco_pct_per_c": 0.01}},
+    {"name": "nonlinearity", "params": {"second_pct_fs": 0.5, "third_pct_fs": 0.2}},
+    {"name": "gauss-markov", "params": {"sigma_ug": 100, "tau_s": 1}},
+    {"name": "flicker", "params": {"bias_instability_ug": 50}},
+    {"name": "random-walk", "params": {"k_ug_rts": 5}},
+    {"name": "vrw", "params": {"vrw_mps_rthr": 0.02}},
+    {"name": "white-noise", "params": {"density_ug_rthz": 50}},
+    {"name": "clock", "params": {"odr_error_pct": 0.5, "jitter_s": 1e-6}},
+]
+
+
+def extended_rows(x: NDArray[np.float64], repeats: int) -> None:
+    """The paper chain of adxl345 and the same profile with every error stage."""
+    registry = build_registry()
+    paper = registry.sensor("adxl345")
+    extended = registry.bind(
+        SensorSpec.model_validate({**paper.model_dump(), "name": "adxl345-ext", "stages": EXTENDED})
+    )
+    print(f"\n{'chain':<18}{'Msamp/s':>15}{'1 thread':>10}")
+    speeds = []
+    for sensor in (paper, extended):
+        all_t, _ = best_time(lambda s=sensor: degrade(x, FS, s, SEED)[0], repeats)
+        one_t, _ = best_time(lambda s=sensor: degrade(x, FS, s, SEED, threads=1)[0], repeats)
+        speeds.append(x.size / all_t)
+        print(f"{sensor.name:<18}{x.size / all_t / 1e6:>15.1f}{x.size / one_t / 1e6:>10.1f}")
+    print(f"extended / paper throughput: {speeds[1] / speeds[0]:.2f}")
 
 
 if __name__ == "__main__":
