@@ -185,7 +185,7 @@ def benchmark(
 
       sdt benchmark --data /data/NLN-EMP --out results/nln --jobs 2
 
-      sdt benchmark --quick --units 5 --sensor-file my_units.toml --sensors my-adxl345
+      sdt benchmark --quick --units 5
     """
     # Imported here so that `sdt --help` and the listing commands start fast.
     from ..bench.config import load_config
