@@ -51,11 +51,16 @@ SCENARIO_TITLES = {
 }
 
 
+def _run_keys(run: RunResult) -> dict[str, object]:
+    """The run's columns; ``unit`` is -1 (nominal profile) for runs labelled without one."""
+    return {c: run.labels.get(c, -1) if c == "unit" else run.labels[c] for c in RUN_COLUMNS}
+
+
 def tidy(runs: Iterable[RunResult]) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame]:
     """(results, per_class, confusion) long tables from run results."""
     rows, per_class, confusion = [], [], []
     for run in runs:
-        keys = {c: run.labels.get(c, -1) if c == "unit" else run.labels[c] for c in RUN_COLUMNS}
+        keys = _run_keys(run)
         rows.append(
             {
                 **keys,
@@ -91,11 +96,7 @@ _RECORDING_FIELDS = ("recording_id", "true", "predicted", "count")
 def per_recording(runs: Iterable[RunResult]) -> pd.DataFrame:
     """Confusion counts per (run, test recording): run columns, recording_id, true,
     predicted, count (non-zero pairs only; empty for runs stored before it existed)."""
-    rows = [
-        [*(run.labels[c] for c in RUN_COLUMNS), *entry]
-        for run in runs
-        for entry in run.per_recording
-    ]
+    rows = [[*_run_keys(run).values(), *entry] for run in runs for entry in run.per_recording]
     return pd.DataFrame(rows, columns=[*RUN_COLUMNS, *_RECORDING_FIELDS])
 
 
