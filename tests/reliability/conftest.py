@@ -4,6 +4,7 @@ and ``sdt`` run as a user runs it (a real process: exit status and stderr as pri
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -25,6 +26,20 @@ SMALL: dict[str, Any] = {
     "jobs": 1,
     "report": False,
 }
+
+
+@pytest.fixture(autouse=True)
+def _sigint_raises_keyboard_interrupt():
+    """In-process tests see SIGINT as KeyboardInterrupt, whatever the parent shell ignored.
+
+    A shell that starts a job in the background (CI runners often do) makes it
+    ignore SIGINT, and children inherit that; a Ctrl-C test would then test
+    nothing. (Processes the tests start reset it themselves, see test_bench_kill.)
+    """
+    previous = signal.getsignal(signal.SIGINT)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
+    signal.signal(signal.SIGINT, previous)
 
 
 @pytest.fixture

@@ -27,6 +27,11 @@ RUNS = 24  # 3 scenarios x 1 sensor x 2 classifiers x 4 repeats
 SDT = [sys.executable, "-m", "sdt_framework"]
 
 
+def sigint_as_in_a_terminal() -> None:
+    """Default SIGINT in the child, as a terminal's foreground job has it."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def start(out, *extra: str) -> subprocess.Popen[str]:
     return subprocess.Popen(
         [*SDT, "benchmark", *QUICK, "--no-report", "--out", str(out), *extra],
@@ -34,6 +39,7 @@ def start(out, *extra: str) -> subprocess.Popen[str]:
         stderr=subprocess.PIPE,
         text=True,
         start_new_session=True,  # its own process group, as a terminal's foreground job
+        preexec_fn=sigint_as_in_a_terminal,  # even when this shell ignores SIGINT
     )
 
 

@@ -24,8 +24,10 @@ NAMES = ["run[bold].npy", "a:x:b.npy", "x[red]:smile:.npy", "a[/]b.npy"]
 @pytest.fixture
 def sdt(monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture):
     """Run ``sdt ARGS`` through ``main()``: (exit status, stdout, stderr)."""
-    monkeypatch.setattr(common.console, "width", 400)
-    monkeypatch.setattr(common.err_console, "width", 400)
+    # the private attribute behind Console.width: undoing it restores "follow the
+    # terminal" (None); undoing the property would pin the width for later tests
+    monkeypatch.setattr(common.console, "_width", 400)
+    monkeypatch.setattr(common.err_console, "_width", 400)
 
     def run(*args: str) -> tuple[int, str, str]:
         monkeypatch.setattr(sys, "argv", ["sdt", *args])
