@@ -56,9 +56,8 @@ OUTPUT_FILES = (
 )
 #: What `sdt report` adds to a results folder.
 REPORT_ENTRIES = ("report.md", "report.html", "figures")
-#: What the commands above the benchmark add to its folder: `sdt explore` (its
-#: sweep tables) and `sdt compare` (comparison.csv, comparison_vs_<other>.csv).
-DERIVED_ENTRIES = (
+#: What `sdt explore` adds to the benchmark's folder (its sweep tables).
+EXPLORE_FILES = (
     "explore.parquet",
     "points.csv",
     "skipped_points.csv",
@@ -68,8 +67,10 @@ DERIVED_ENTRIES = (
     "min_spec_points.csv",
     "pareto.csv",
     "sweep.toml",
-    "comparison.csv",
 )
+#: What the commands above the benchmark add to its folder: `sdt explore` and
+#: `sdt compare` (comparison.csv, comparison_vs_<other>.csv).
+DERIVED_ENTRIES = (*EXPLORE_FILES, "comparison.csv")
 _DERIVED = re.compile(r"^comparison_vs_.+\.csv$")
 #: Settings that change how a benchmark runs, never what it finds.
 RUN_ONLY_SETTINGS = frozenset({"jobs", "backend", "scheduler", "cache_dir", "report"})

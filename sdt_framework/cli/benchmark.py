@@ -14,12 +14,12 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 from rich.table import Table
 from rich.text import Text
 
 from ..errors import SDTError
-from .common import console, err_console, registry
+from .common import console, err_console, registry, warn
+from .progress import progress_bar
 
 EXIT_CLASSIFIER_FAILED = 1
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a process ended by Ctrl-C
@@ -259,23 +259,7 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
     )
     if size.seconds > CONFIRM_ABOVE_SECONDS:
         _say("note:", "yellow", f"this benchmark is {size.line()}")
-    columns = (
-        TextColumn("{task.description:>9}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeRemainingColumn(),
-    )
-    with Progress(*columns, console=console, transient=False) as bar:
-        tasks: dict[str, Any] = {}
-
-        def progress(stage: str, done: int, total: int) -> None:
-            if stage not in tasks:
-                tasks[stage] = bar.add_task(stage, total=total)
-            bar.update(tasks[stage], completed=done, total=total)
-
-        def warn(message: str) -> None:
-            _say("warning:", "yellow", message)
-
+    with progress_bar() as progress:
         result = run_benchmark(plan, out_dir, progress, warn)
     results = write_outputs(result, out_dir)
     _print_table4(results, [s.name for s in plan.sensors])

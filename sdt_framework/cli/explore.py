@@ -11,7 +11,7 @@ from typing import Any
 
 import typer
 
-from .common import console, err_console, registry, table
+from .common import console, err_console, registry, table, warn
 
 
 def _example() -> str:
@@ -136,7 +136,7 @@ def _run(
         soft_wrap=True,
     )
     with progress_bar() as progress:
-        result = run_benchmark(plan, out_dir, progress)
+        result = run_benchmark(plan, out_dir, progress, warn)
     results = write_outputs(result, out_dir)
     tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
     if plan.config.report and not no_report:

@@ -22,6 +22,7 @@ from pathlib import Path
 import pandas as pd
 import tomli_w
 
+from ..bench.folder import EXPLORE_FILES
 from ..bench.results import write_frame
 from ..io import atomic_write_text
 from .effects import main_effects, point_means, with_best
@@ -32,18 +33,6 @@ from .sensitivity import sensitivity
 from .sweep import DEMAND
 
 __all__ = ["EXPLORE_FILES", "write_explore"]
-
-EXPLORE_FILES = (
-    "explore.parquet",
-    "points.csv",
-    "skipped_points.csv",
-    "main_effects.csv",
-    "sensitivity.csv",
-    "min_spec.csv",
-    "min_spec_points.csv",
-    "pareto.csv",
-    "sweep.toml",
-)
 
 
 def _base_cost(explore: ExplorePlan) -> float:
