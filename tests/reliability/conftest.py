@@ -14,6 +14,7 @@ import pytest
 
 from sdt_framework import build_registry
 from sdt_framework.bench.config import BenchmarkConfig
+from sdt_framework.cli.main import main
 
 #: Motor-2 only (15 runs), 1.5 s acquisitions (2 windows per channel), 2 channels, 1 sensor.
 SMALL: dict[str, Any] = {
@@ -71,6 +72,23 @@ def read_only_dir(tmp_path) -> Path:
     folder.mkdir()
     folder.chmod(0o555)
     return folder
+
+
+@pytest.fixture
+def sdt_main(monkeypatch, capsys):
+    """``sdt_main(*args)``: ``main()`` in this process: (exit status, stdout, stderr)."""
+
+    def run(*args: str) -> tuple[int, str, str]:
+        monkeypatch.setattr(sys, "argv", ["sdt", *args])
+        try:
+            main()
+            code = 0
+        except SystemExit as exc:
+            code = exc.code if isinstance(exc.code, int) else 1
+        out = capsys.readouterr()
+        return code, out.out, out.err
+
+    return run
 
 
 @pytest.fixture

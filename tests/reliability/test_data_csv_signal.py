@@ -8,29 +8,16 @@ that is not UTF-8 as a codec message without a line number.
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from sdt_framework.chain import degrade
-from sdt_framework.cli.main import main
 from sdt_framework.data import open_manifest
 from sdt_framework.registry import build_registry
 
 FS = 20000.0
-
-
-def sdt(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
-    monkeypatch.setattr(sys, "argv", ["sdt", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else 1
-    out = capsys.readouterr()
-    return code, out.out, out.err
 
 
 @pytest.fixture
@@ -39,13 +26,13 @@ def acc() -> np.ndarray:
     return 0.5 * np.sin(2 * np.pi * 120 * t) + 0.1 * np.cos(2 * np.pi * 900 * t)
 
 
-def test_time_acc_csv_is_one_acquisition_in_degrade(monkeypatch, capsys, tmp_path, acc) -> None:
+def test_time_acc_csv_is_one_acquisition_in_degrade(
+    sdt_main, monkeypatch, capsys, tmp_path, acc
+) -> None:
     src, out = tmp_path / "pump.csv", tmp_path / "out.npy"
     t = np.arange(acc.size) / FS
     np.savetxt(src, np.c_[t, acc], delimiter=",", fmt="%.17g", header="time,acc", comments="")
-    code, stdout, err = sdt(
-        monkeypatch,
-        capsys,
+    code, stdout, err = sdt_main(
         *("degrade", str(src), "--sensor", "adxl345", "--fs", "20000", "--no-noise"),
         *("--out", str(out)),
     )
@@ -95,12 +82,10 @@ def test_a_ramp_alone_is_a_signal_not_a_time_axis(tmp_path: Path) -> None:
     assert parsed.note is None
 
 
-def test_header_only_file_is_refused(monkeypatch, capsys, tmp_path: Path) -> None:
+def test_header_only_file_is_refused(sdt_main, monkeypatch, capsys, tmp_path: Path) -> None:
     src = tmp_path / "hdr.csv"
     src.write_text("time,acc\n")
-    code, _, err = sdt(
-        monkeypatch,
-        capsys,
+    code, _, err = sdt_main(
         *("degrade", str(src), "--sensor", "adxl345", "--fs", "20000"),
         *("--out", str(tmp_path / "o.npy")),
     )
@@ -123,7 +108,7 @@ def test_header_only_file_is_refused(monkeypatch, capsys, tmp_path: Path) -> Non
     ids=["latin-1-body", "latin-1-header", "ragged", "empty-cell", "semicolons", "nan", "empty"],
 )
 def test_bad_signal_file_is_one_line_naming_file_and_line(
-    monkeypatch, capsys, tmp_path: Path, content: bytes, expected: str
+    sdt_main, monkeypatch, capsys, tmp_path: Path, content: bytes, expected: str
 ) -> None:
     src = tmp_path / "sig.csv"
     src.write_bytes(content)
@@ -135,9 +120,7 @@ def test_bad_signal_file_is_one_line_naming_file_and_line(
     dataset = open_manifest(manifest, validate=True)
     (skip,) = dataset.skipped
     assert skip.reason.startswith(f"{src}: ") and expected in skip.reason
-    code, _, err = sdt(
-        monkeypatch,
-        capsys,
+    code, _, err = sdt_main(
         *("degrade", str(src), "--sensor", "adxl345", "--fs", "20000"),
         *("--out", str(tmp_path / "o.npy")),
     )

@@ -10,14 +10,12 @@ or non-UTF-8 manifest gave a pandas traceback.
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import pytest
 
-from sdt_framework.cli.main import main
 from sdt_framework.data import open_manifest
 from sdt_framework.errors import SDTError
 
@@ -36,17 +34,6 @@ def write(folder: Path, text: str, name: str = "manifest.csv") -> Path:
     path = folder / name
     path.write_text(text)
     return path
-
-
-def sdt(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
-    monkeypatch.setattr(sys, "argv", ["sdt", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else 1
-    out = capsys.readouterr()
-    return code, out.out, out.err
 
 
 def test_two_machines_reusing_a_run_and_channel_are_two_recordings(folder: Path) -> None:
@@ -139,11 +126,11 @@ def test_integer_valued_float_severity_is_accepted(folder: Path) -> None:
     ids=["zero-bytes", "long-row", "short-row", "latin-1", "header-only"],
 )
 def test_broken_manifest_is_one_line_naming_file_and_line(
-    folder: Path, monkeypatch, capsys, content: bytes, expected: str
+    sdt_main, folder: Path, monkeypatch, capsys, content: bytes, expected: str
 ) -> None:
     manifest = folder / "manifest.csv"
     manifest.write_bytes(content)
-    code, _, err = sdt(monkeypatch, capsys, "dataset", "inspect", str(manifest))
+    code, _, err = sdt_main("dataset", "inspect", str(manifest))
     assert code == 2 and "Traceback" not in err
     assert err.count("\n") == 1 and expected in err and str(manifest) in err
 
@@ -157,7 +144,9 @@ def test_headerless_csv_signal_keeps_its_first_row(folder: Path) -> None:
     np.testing.assert_array_equal(rec.load(), values.T)
 
 
-def test_time_column_of_a_manifest_csv_is_noted(folder: Path, monkeypatch, capsys) -> None:
+def test_time_column_of_a_manifest_csv_is_noted(
+    sdt_main, folder: Path, monkeypatch, capsys
+) -> None:
     t = np.arange(200) / 1000
     np.savetxt(folder / "a.csv", np.c_[t, np.sin(t)], delimiter=",", fmt="%.9g")  # no header
     manifest = write(folder, HEADER + "a.csv,1000,healthy,,run-1,ch1,rig\n")
@@ -166,5 +155,5 @@ def test_time_column_of_a_manifest_csv_is_noted(folder: Path, monkeypatch, capsy
     np.testing.assert_allclose(rec.load(), [np.sin(t)], rtol=1e-8)
     (note,) = ds.notes
     assert "a.csv" in note and "column 1 read as time" in note
-    code, out, _ = sdt(monkeypatch, capsys, "dataset", "inspect", str(manifest), "--json")
+    code, out, _ = sdt_main("dataset", "inspect", str(manifest), "--json")
     assert code == 0 and json.loads(out)["notes"] == [note]

@@ -10,12 +10,10 @@ stand-in written by the test, with lines long and short.
 from __future__ import annotations
 
 import json
-import sys
 from pathlib import Path
 
 import pytest
 
-from sdt_framework.cli.main import main
 from sdt_framework.data import open_manifest
 
 #: the promise: at most this many consecutive characters of a file's content in a message
@@ -44,17 +42,6 @@ def leaks(text: str) -> list[str]:
         for i in range(len(line) - n + 1)
         if line[i : i + n] in text
     ]
-
-
-def sdt(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
-    monkeypatch.setattr(sys, "argv", ["sdt", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else 1
-    out = capsys.readouterr()
-    return code, out.out, out.err
 
 
 def test_quote_cuts_long_tokens() -> None:
@@ -87,12 +74,12 @@ def test_manifest_symlinked_to_a_system_file(tmp_path: Path, secret: Path) -> No
     assert leaks(str(info.value)) == [], str(info.value)
 
 
-def test_degrade_of_a_system_file(monkeypatch, capsys, tmp_path: Path, secret: Path) -> None:
+def test_degrade_of_a_system_file(
+    sdt_main, monkeypatch, capsys, tmp_path: Path, secret: Path
+) -> None:
     link = tmp_path / "in.csv"
     link.symlink_to(secret)
-    code, out, err = sdt(
-        monkeypatch,
-        capsys,
+    code, out, err = sdt_main(
         *("degrade", str(link), "--sensor", "adxl345", "--fs", "20000"),
         *("--out", str(tmp_path / "o.npy")),
     )

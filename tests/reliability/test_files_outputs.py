@@ -11,26 +11,12 @@ files in: it stands for a read-only folder.
 from __future__ import annotations
 
 import errno
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from sdt_framework.cli.main import main
-
 READ_ONLY = Path("/sys")
-
-
-def sdt(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
-    monkeypatch.setattr(sys, "argv", ["sdt", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else 1
-    out = capsys.readouterr()
-    return code, out.out, out.err
 
 
 def one_line_error(code: int, err: str) -> bool:
@@ -51,7 +37,9 @@ def degrade_args(src: Path | str, out: Path | str) -> list[str]:
 
 
 @pytest.mark.parametrize("form", ["same", "dotted", "linked-folder"])
-def test_degrade_refuses_its_input_as_output(monkeypatch, capsys, signal: Path, form) -> None:
+def test_degrade_refuses_its_input_as_output(
+    sdt_main, monkeypatch, capsys, signal: Path, form
+) -> None:
     before = signal.read_bytes()
     (signal.parent / "sub").mkdir()
     (signal.parent / "link").symlink_to(signal.parent)
@@ -60,42 +48,42 @@ def test_degrade_refuses_its_input_as_output(monkeypatch, capsys, signal: Path, 
         "dotted": signal.parent / "sub" / ".." / signal.name,
         "linked-folder": signal.parent / "link" / signal.name,
     }[form]
-    code, _, err = sdt(monkeypatch, capsys, *degrade_args(signal, out))
+    code, _, err = sdt_main(*degrade_args(signal, out))
     assert one_line_error(code, err) and "is the input file" in err
     assert signal.read_bytes() == before
 
 
-def test_features_extract_refuses_a_link_to_its_input(monkeypatch, capsys, signal: Path) -> None:
+def test_features_extract_refuses_a_link_to_its_input(
+    sdt_main, monkeypatch, capsys, signal: Path
+) -> None:
     before = signal.read_bytes()
     out = signal.parent / "features.csv"
     out.symlink_to(signal)
-    code, _, err = sdt(
-        monkeypatch, capsys, "features", "extract", str(signal), "--fs", "3200", "--out", str(out)
-    )
+    code, _, err = sdt_main("features", "extract", str(signal), "--fs", "3200", "--out", str(out))
     assert one_line_error(code, err) and "is the input file" in err
     assert signal.read_bytes() == before and out.is_symlink()
 
 
 def test_synth_refuses_a_folder_of_recordings_unless_overwrite(
-    monkeypatch, capsys, tmp_path: Path
+    sdt_main, monkeypatch, capsys, tmp_path: Path
 ) -> None:
     mine = tmp_path / "data" / "Vibration" / "Motor-4" / "70" / "my run" / "mine.csv"
     mine.parent.mkdir(parents=True)
     mine.write_text("time,0\n0,1\n")
     args = ["dataset", "synth", "--out", str(tmp_path / "data"), "--duration", "0.25"]
-    code, _, err = sdt(monkeypatch, capsys, *args)
+    code, _, err = sdt_main(*args)
     assert one_line_error(code, err) and "already holds recordings (1 files" in err
     assert "--overwrite" in err
     assert sorted(p.name for p in (tmp_path / "data").rglob("*.csv")) == ["mine.csv"]
-    code, _, err = sdt(monkeypatch, capsys, *args, "--overwrite")
+    code, _, err = sdt_main(*args, "--overwrite")
     assert code == 0, err
     assert len(list((tmp_path / "data").rglob("*.csv"))) == 261
     assert mine.read_text() == "time,0\n0,1\n"
     assert "1 other file(s)" in err and "left as they were" in err
 
 
-def test_synth_help_shows_overwrite_with_an_example(monkeypatch, capsys) -> None:
-    code, out, _ = sdt(monkeypatch, capsys, "dataset", "synth", "--help")
+def test_synth_help_shows_overwrite_with_an_example(sdt_main, monkeypatch, capsys) -> None:
+    code, out, _ = sdt_main("dataset", "synth", "--help")
     assert code == 0 and "--overwrite" in out and "sdt dataset synth --out" in out
 
 
@@ -111,21 +99,19 @@ def test_synth_help_shows_overwrite_with_an_example(monkeypatch, capsys) -> None
     ids=["extension", "folder", "read-only", "uncreatable-folder", "file-in-the-way"],
 )
 def test_bad_plot_path_is_refused_before_the_computation(
-    monkeypatch, capsys, tmp_path: Path, signal: Path, plot: str, expected: str
+    sdt_main, monkeypatch, capsys, tmp_path: Path, signal: Path, plot: str, expected: str
 ) -> None:
     calls: list[object] = []
     monkeypatch.setattr("sdt_framework.chain.noise_check", lambda *a, **k: calls.append(a))
     path = plot.format(tmp=tmp_path)
-    code, _, err = sdt(monkeypatch, capsys, "validate-noise", "--sensor", "adxl345", "--plot", path)
+    code, _, err = sdt_main("validate-noise", "--sensor", "adxl345", "--plot", path)
     assert one_line_error(code, err) and f"--plot {path}" in err and expected in err
     assert calls == []  # refused before any computation
 
 
-def test_plot_into_a_new_folder_is_created(monkeypatch, capsys, tmp_path: Path) -> None:
+def test_plot_into_a_new_folder_is_created(sdt_main, monkeypatch, capsys, tmp_path: Path) -> None:
     png = tmp_path / "figures" / "noise.png"
-    code, _, err = sdt(
-        monkeypatch, capsys, "validate-noise", "--sensor", "adxl345", "--plot", str(png)
-    )
+    code, _, err = sdt_main("validate-noise", "--sensor", "adxl345", "--plot", str(png))
     assert code == 0, err
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
@@ -173,13 +159,17 @@ def test_plot_into_a_new_folder_is_created(monkeypatch, capsys, tmp_path: Path) 
         "noise-missing-recording",
     ],
 )
-def test_os_errors_are_one_line(monkeypatch, capsys, tmp_path: Path, signal, command, expected):
+def test_os_errors_are_one_line(
+    sdt_main, monkeypatch, capsys, tmp_path: Path, signal, command, expected
+):
     (tmp_path / "o.npy").mkdir()
-    code, _, err = sdt(monkeypatch, capsys, *command(signal, tmp_path))
+    code, _, err = sdt_main(*command(signal, tmp_path))
     assert one_line_error(code, err) and expected in err, err
 
 
-def test_disk_full_while_writing_leaves_nothing(monkeypatch, capsys, tmp_path: Path, signal):
+def test_disk_full_while_writing_leaves_nothing(
+    sdt_main, monkeypatch, capsys, tmp_path: Path, signal
+):
     """ENOSPC in the middle of the write: one line, no output, no temporary file left."""
     import sdt_framework.chain.files as files
 
@@ -188,6 +178,6 @@ def test_disk_full_while_writing_leaves_nothing(monkeypatch, capsys, tmp_path: P
 
     monkeypatch.setattr(files.np, "save", full)
     out = tmp_path / "out" / "y.npy"
-    code, _, err = sdt(monkeypatch, capsys, *degrade_args(signal, out))
+    code, _, err = sdt_main(*degrade_args(signal, out))
     assert one_line_error(code, err) and "disk is full" in err
     assert list(out.parent.iterdir()) == []

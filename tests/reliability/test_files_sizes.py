@@ -9,7 +9,6 @@ long one needs ``--yes``. The estimates are checked against measurement.
 
 from __future__ import annotations
 
-import sys
 import tracemalloc
 from pathlib import Path
 
@@ -17,59 +16,51 @@ import numpy as np
 import pytest
 
 from sdt_framework.chain import noise_check
-from sdt_framework.cli.main import main
 from sdt_framework.data import open_synthetic, write_nln_emp
 from sdt_framework.data.synth import FS_HZ, generate_run
 from sdt_framework.registry import build_registry
 
 
-def sdt(monkeypatch, capsys, *args: str) -> tuple[int, str, str]:
-    monkeypatch.setattr(sys, "argv", ["sdt", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else 1
-    out = capsys.readouterr()
-    return code, out.out, out.err
-
-
 @pytest.mark.parametrize("yes", [[], ["--yes"]])
-def test_noise_check_that_cannot_fit_is_refused(monkeypatch, capsys, yes: list[str]) -> None:
+def test_noise_check_that_cannot_fit_is_refused(
+    sdt_main, monkeypatch, capsys, yes: list[str]
+) -> None:
     args = ["validate-noise", "--sensor", "adxl345", "--windows", "1000000000", *yes]
-    code, _, err = sdt(monkeypatch, capsys, *args)
+    code, _, err = sdt_main(*args)
     assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
     # 10^9 windows x 2048 samples at 3200 Hz <- 20 kHz: 6.4x as many input samples
     assert "12,799,999,999,995 samples" in err and "TB of memory" in err
     assert "more than the" in err and "--yes" not in err
 
 
-def test_large_noise_check_needs_yes(monkeypatch, capsys) -> None:
+def test_large_noise_check_needs_yes(sdt_main, monkeypatch, capsys) -> None:
     monkeypatch.setattr("sdt_framework.cli.guards.LONG_SECONDS", 0.0)
-    code, _, err = sdt(monkeypatch, capsys, "validate-noise", "--sensor", "adxl345")
+    code, _, err = sdt_main("validate-noise", "--sensor", "adxl345")
     # (8 x 2048 - 1) x 20000 / 3200 + 1 input samples give 8 x 2048 outputs at 3200 Hz
     assert code == 2 and "pass --yes to run it" in err and "102,395 samples" in err
-    code, out, err = sdt(monkeypatch, capsys, "validate-noise", "--sensor", "adxl345", "--yes")
+    code, out, err = sdt_main("validate-noise", "--sensor", "adxl345", "--yes")
     assert code == 0 and "Noise RMS" in out, err
 
 
 @pytest.mark.parametrize("yes", [[], ["--yes"]])
-def test_synth_that_cannot_fit_is_refused(monkeypatch, capsys, tmp_path: Path, yes) -> None:
+def test_synth_that_cannot_fit_is_refused(
+    sdt_main, monkeypatch, capsys, tmp_path: Path, yes
+) -> None:
     out = tmp_path / "syn"
     args = ["dataset", "synth", "--out", str(out), "--duration", "1e6", *yes]
-    code, _, err = sdt(monkeypatch, capsys, *args)
+    code, _, err = sdt_main(*args)
     assert code == 2 and err.count("\n") == 1
     assert "5,200,000,000,000 samples" in err and "more than the" in err  # 260 x 1e6 s x 20 kHz
     assert not out.exists()
 
 
-def test_long_synth_needs_yes(monkeypatch, capsys, tmp_path: Path) -> None:
+def test_long_synth_needs_yes(sdt_main, monkeypatch, capsys, tmp_path: Path) -> None:
     monkeypatch.setattr("sdt_framework.cli.guards.LONG_SECONDS", 0.0)
     args = ["dataset", "synth", "--out", str(tmp_path / "syn"), "--duration", "0.25"]
-    code, _, err = sdt(monkeypatch, capsys, *args)
+    code, _, err = sdt_main(*args)
     assert code == 2 and "1,300,000 samples" in err and "pass --yes" in err
     assert not (tmp_path / "syn").exists()
-    code, _, err = sdt(monkeypatch, capsys, *args, "--yes")
+    code, _, err = sdt_main(*args, "--yes")
     assert code == 0 and "wrote 260 files" in err
 
 
