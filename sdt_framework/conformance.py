@@ -118,7 +118,8 @@ def _check_stage(spec: StageSpec) -> None:
     t = np.arange(int(rates[0])) / rates[0]
     x = 0.5 * np.sin(2 * np.pi * 80.0 * t)[None, :].repeat(2, axis=0)
     before = x.copy()
-    ctx = RunContext(seed=1, acquisition_ids=(0, 1), threads=1)
+    node = (0.3 * x, -0.2 * x) if spec.node else None  # a node stage reads two more axes
+    ctx = RunContext(seed=1, acquisition_ids=(0, 1), threads=1, node=node)
     y, y2 = stage.apply(x, ctx), stage.apply(x, ctx)
     if not np.array_equal(x, before):
         _fail(spec, "apply modified its input")

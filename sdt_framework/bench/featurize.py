@@ -29,6 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..chain import compile_chain
 from ..chain.shared import SharedPrefix, prefix_key
 from ..data.cache import CORRUPT_ENTRY_ERRORS
 from ..data.recording import Recording
@@ -36,7 +37,7 @@ from ..features import extract
 from ..io import atomic_path
 from ..seeding import derive_seed
 from ..specs import FeatureSetSpec, SensorSpec
-from ..stages import draw_unit, has_tolerances, is_random
+from ..stages import draw_unit, has_tolerances, is_random, uses_node
 
 __all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurize_recording", "noise_seed"]
 
@@ -80,6 +81,7 @@ class FeatureJob:
     cache_dir: str | None
     axis: str = "x"  # the sensor axis this recording's channel is mounted on
     units: int | None = None  # physical units per sensor (None: the nominal profile only)
+    node: tuple[Recording, ...] = ()  # the triaxial node's other two axes (for cross-axis)
 
 
 def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) -> int | None:
@@ -110,13 +112,29 @@ def _key(job: FeatureJob, sensor: SensorSpec, chain_seed: int | None) -> str:
         "settle_s": job.settle_s,
         "seed": chain_seed,
     }
+    if _needs_node(sensor, job):  # the other axes' samples enter the output
+        parts["node"] = [[r.metadata(), _source_state(r.source)] for r in job.node]
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()
+
+
+def _needs_node(sensor: SensorSpec, job: FeatureJob) -> bool:
+    """Whether ``sensor``'s chain (bound, as compiled) reads the node's other axes."""
+    return uses_node(compile_chain(sensor, job.recording.sampling_rate_hz).sensor)
 
 
 def _cache_path(job: FeatureJob, key: str) -> Path | None:
     if job.cache_dir is None:
         return None
     return Path(job.cache_dir) / "features" / key[:2] / f"{key}.npz"
+
+
+def _open(job: FeatureJob) -> SharedPrefix:
+    """The job's recording, read, with its node's other axes when a sensor reads them."""
+    rec = job.recording
+    label = f"{rec.source} ({rec.recording_id})"
+    needed = any(_needs_node(sensor, job) for sensor, _ in _variants(job))
+    node = tuple(other.load() for other in job.node) if needed and job.node else None
+    return SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label, node=node)
 
 
 def _compute(shared: SharedPrefix, job: FeatureJob, sensor: SensorSpec, chain_seed: int | None):
@@ -203,9 +221,7 @@ def featurize_recording(job: FeatureJob) -> RecordingFeatures:
                     path.unlink(missing_ok=True)
             if arrays is None:
                 if shared is None:
-                    rec = job.recording
-                    label = f"{rec.source} ({rec.recording_id})"
-                    shared = SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label)
+                    shared = _open(job)
                 arrays = _compute(shared, job, sensor, chain_seed)
                 source = "computed"
                 if path is not None:
@@ -221,37 +237,6 @@ def featurize_recording(job: FeatureJob) -> RecordingFeatures:
         firsts = [b for b in blocks if b.unit == 0 and b.sensor in same]
         blocks += [_relabel(b, b.repeat, u, "shared") for u in range(1, job.units) for b in firsts]
     return out
-
-
-def _sensor_blocks(
-    job: FeatureJob, sensor: SensorSpec, unit: int, loaded: list[np.ndarray]
-) -> list[FeatureBlock]:
-    """Every repetition of one sensor (one unit of it) on the job's recording."""
-    blocks: list[FeatureBlock] = []
-    done: dict[int | None, FeatureBlock] = {}
-    for repeat in range(job.repeats):
-        chain_seed = noise_seed(sensor, job.seed, repeat, job.recording.recording_id)
-        if chain_seed in done:  # deterministic chain: identical for every repetition
-            blocks.append(_relabel(done[chain_seed], repeat, unit, "shared"))
-            continue
-        key = _key(job, sensor, chain_seed)
-        path = _cache_path(job, key)
-        if path is not None and path.exists():
-            with np.load(path) as stored:
-                arrays = (stored["values"], stored["acquisition"], stored["window"])
-            source = "cached"
-        else:
-            if not loaded:
-                loaded.append(job.recording.load())
-            arrays = _compute(job, loaded[0], sensor, chain_seed)
-            source = "computed"
-            if path is not None:
-                with atomic_path(path) as tmp, tmp.open("wb") as handle:
-                    np.savez(handle, values=arrays[0], acquisition=arrays[1], window=arrays[2])
-        block = FeatureBlock(job.recording.recording_id, sensor.name, repeat, *arrays, source, unit)
-        done[chain_seed] = block
-        blocks.append(block)
-    return blocks
 
 
 def _relabel(block: FeatureBlock, repeat: int, unit: int, source: str) -> FeatureBlock:

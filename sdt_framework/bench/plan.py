@@ -27,6 +27,7 @@ from ..features import resolve_feature_set, samples_for
 from ..registry import Registry
 from ..specs import ClassifierSpec, FeatureSetSpec, SensorSpec
 from .config import BenchmarkConfig
+from .nodes import find_nodes, node_sensors
 from .scenarios import Run, check_allocation, load_allocation, rule_allocation
 from .sensor_set import default_reference, default_sensor_names, screen_sensors
 
@@ -48,6 +49,8 @@ class Plan:
     skipped: dict[tuple[str, str], str]
     skipped_sensors: dict[str, str] = field(default_factory=dict)
     reference: str = "wilcoxon-786b10"
+    #: recording id -> its node's other two axes, for sensors with a node stage (cross-axis)
+    nodes: dict[str, tuple[Recording, Recording]] = field(default_factory=dict)
 
 
 def _pick(names: list[str] | None, lookup: Callable[[str], Any], everything: list) -> list:
@@ -71,7 +74,7 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     if config.feature_dtype is not None:
         feature_set = feature_set.with_dtype(config.feature_dtype)
     dataset = _open(config, registry)
-    recordings = dataset.recordings()
+    recordings = everything = dataset.recordings()
     if not recordings:
         raise SDTError(f"dataset {dataset.name!r} has no usable recordings")
     machines = _select(config.machines, {r.machine for r in recordings}, "machine(s)")
@@ -80,7 +83,7 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     rates = {r.sampling_rate_hz for r in recordings}
     if sensors is None:
         sensors = _resolve_sensors(default_sensor_names(rates), registry)
-    _select(list(config.axes) or None, channels, "channel(s) in axes")
+    _select(list(config.axes) or None, {r.channel for r in everything}, "channel(s) in axes")
     sensors, skipped_sensors = screen_sensors(sensors, recordings, config.axes)
     _check_rates(recordings, sensors, config)
 
@@ -102,6 +105,8 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     ]
     needed = set(zip(used["machine"], used["run"], strict=True))
     recordings = [r for r in recordings if (r.machine, r.run) in needed]
+    users = node_sensors(sensors, registry)
+    nodes = find_nodes(recordings, everything, config.axes, users) if users else {}
     key_source = json.dumps(
         [dataset.name, config.data, config.dataset_options], sort_keys=True, default=str
     )
@@ -117,6 +122,7 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
         skipped,
         skipped_sensors,
         config.reference or default_reference(rates),
+        nodes,
     )
 
 

@@ -234,6 +234,7 @@ def run_benchmark(
             str(cache_dir),
             config.axes.get(r.channel, "x"),
             config.units,
+            plan.nodes.get(r.recording_id, ()),
         )
         for r in plan.recordings
     ]

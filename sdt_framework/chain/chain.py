@@ -10,7 +10,7 @@ pass or in two, so fusing is bit-identical and halves the passes over 20 kHz dat
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
@@ -21,7 +21,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..api import check_real, check_seed, default_registry, resolve
 from ..specs import SensorSpec
 from ..stages import build_extra, place
-from .errors import check_rates, check_signal
+from .errors import check_node, check_rates, check_signal
 from .filters import design_lowpass
 from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise
 
@@ -114,7 +114,7 @@ class Chain:
         starts = range(0, x.shape[0], per)
 
         def block(start: int) -> NDArray[np.float64]:
-            sub = replace(ctx, acquisition_ids=ctx.acquisition_ids[start : start + per])
+            sub = ctx.rows(start, start + per)
             y = x[start : start + per]
             for stage in self.stages:
                 y = stage.apply(y, sub)
@@ -176,6 +176,7 @@ def degrade(
     first_index: int = 0,
     acquisition_ids: Sequence[int | str] | None = None,
     threads: int | None = None,
+    other_axes: Mapping[str, ArrayLike] | None = None,
 ) -> tuple[NDArray[np.float64], float]:
     """What ``sensor`` would have recorded of ``x``: the SDT output and its rate.
 
@@ -204,6 +205,10 @@ def degrade(
         bit-identical to row k of the batch.
     threads
         Worker threads for filtering a batch (default: CPUs available).
+    other_axes
+        For a sensor with a node stage (cross-axis sensitivity): the same
+        acquisitions on the triaxial node's other two axes, e.g.
+        ``{"y": ay, "z": az}``, each shaped like ``x``. Ignored by other chains.
 
     Returns
     -------
@@ -231,7 +236,8 @@ def degrade(
         ids = tuple(acquisition_ids)
         if len(ids) != batch.shape[0]:
             raise ValueError(f"{len(ids)} acquisition_ids for {batch.shape[0]} acquisitions")
-    ctx = RunContext(seed=seed, acquisition_ids=ids, noise=noise)
+    node = None if other_axes is None else check_node(other_axes, arr, sensor, label)
+    ctx = RunContext(seed=seed, acquisition_ids=ids, noise=noise, node=node)
     if threads is not None:
         ctx = replace(ctx, threads=max(1, int(threads)))
     out = chain.run(batch, ctx)

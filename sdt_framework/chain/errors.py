@@ -8,6 +8,7 @@ once which file and which setting to fix (SPEC section 2, "Rules").
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -16,7 +17,13 @@ from ..api import describe_dtype
 from ..errors import SDTError
 from ..specs import SensorSpec
 
-__all__ = ["ChainInputError", "ChainInputTypeError", "check_rates", "check_signal"]
+__all__ = [
+    "ChainInputError",
+    "ChainInputTypeError",
+    "check_node",
+    "check_rates",
+    "check_signal",
+]
 
 
 class ChainInputError(SDTError):
@@ -103,3 +110,33 @@ def check_rates(fs: float, sensor: SensorSpec, label: str) -> float:
             f"digital cutoff {cutoff:g} Hz is at or above the target Nyquist {target / 2:g} Hz",
         )
     return fs
+
+
+def check_node(
+    other_axes: Mapping[str, ArrayLike], arr: NDArray[np.float64], sensor: SensorSpec, label: str
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """The node's other two axes as 2-D float64 batches shaped like ``arr``, or raise.
+
+    ``other_axes`` maps two axis names (``"y"``, ``"z"``) to the same
+    acquisitions recorded on those axes; each gets the checks of
+    :func:`check_signal`.
+    """
+    if not isinstance(other_axes, Mapping) or len(other_axes) != 2:
+        raise ChainInputError(
+            sensor.name,
+            label,
+            "other_axes must map the node's other two axes to their signals, "
+            "e.g. {'y': ay, 'z': az}",
+        )
+    batches = []
+    for axis, values in other_axes.items():
+        other = check_signal(values, sensor, f"{label or '<array>'}, axis {axis}")
+        if other.shape != arr.shape:
+            raise ChainInputError(
+                sensor.name,
+                label,
+                f"axis {axis!r} holds shape {other.shape}, this axis {arr.shape}; "
+                f"the three axes of a node must be recorded together",
+            )
+        batches.append(np.atleast_2d(other))
+    return batches[0], batches[1]

@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..specs import SensorSpec
 from .chain import Chain, compile_chain
-from .errors import check_signal
+from .errors import check_node, check_signal
 from .stages import LowPass, RunContext, Sample, WhiteNoise
 
 __all__ = ["SharedPrefix", "prefix_key", "split_chain"]
@@ -72,12 +72,24 @@ class SharedPrefix:
         Worker threads for filtering (as in :func:`~sdt_framework.chain.degrade`).
     keep
         Intermediate arrays held at once.
+    node
+        The same acquisitions on the triaxial node's other two axes, for a
+        sensor with a node stage (as ``other_axes`` of ``degrade``).
     """
 
     def __init__(
-        self, x: ArrayLike, fs: float, *, label: str = "", threads: int = 1, keep: int = 6
+        self,
+        x: ArrayLike,
+        fs: float,
+        *,
+        label: str = "",
+        threads: int = 1,
+        keep: int = 6,
+        node: tuple[ArrayLike, ArrayLike] | None = None,
     ) -> None:
         self.x = x
+        self.node = node
+        self._node: tuple[NDArray[np.float64], NDArray[np.float64]] | None = None
         self.fs = fs
         self.label = label
         self.threads = threads
@@ -104,6 +116,9 @@ class SharedPrefix:
         if self._checked is None:  # checked once: the samples do not change
             self._checked = check_signal(self.x, sensor, self.label)
         arr = self._checked
+        if self.node is not None and self._node is None:
+            others = dict(zip(("a", "b"), self.node, strict=True))
+            self._node = check_node(others, arr, sensor, self.label)
         chain = compile_chain(sensor, self.fs, label=self.label)
         prefix, rest = split_chain(chain)
         batch = np.atleast_2d(arr)
@@ -112,6 +127,7 @@ class SharedPrefix:
             acquisition_ids=tuple(range(batch.shape[0])),
             noise=noise,
             threads=max(1, int(self.threads)),
+            node=self._node,
         )
         key = prefix_key(sensor, self.fs)
 

@@ -12,7 +12,7 @@ in the tuple :func:`sdt_framework.chain.build_stages` returns.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from functools import lru_cache
 from typing import Protocol, runtime_checkable
@@ -43,13 +43,22 @@ class RunContext:
 
     ``acquisition_ids[i]`` names row ``i`` of the batch for seeding, so a row
     gets the same noise whether it is degraded in a batch or alone. ``threads``
-    is how many blocks of rows the chain runs at once.
+    is how many blocks of rows the chain runs at once. ``node`` holds the same
+    acquisitions on the triaxial node's other two axes (row ``i`` of each is
+    row ``i`` of the batch, at the input rate), for a node stage such as
+    cross-axis sensitivity; None when the input is a single axis.
     """
 
     seed: int = 0
     acquisition_ids: tuple[int | str, ...] = ()
     noise: bool = True
     threads: int = field(default_factory=lambda: len(os.sched_getaffinity(0)))
+    node: tuple[Batch, ...] | None = None
+
+    def rows(self, start: int, stop: int) -> RunContext:
+        """The context of rows ``start:stop`` of the batch (ids and node rows sliced)."""
+        node = None if self.node is None else tuple(a[start:stop] for a in self.node)
+        return replace(self, acquisition_ids=self.acquisition_ids[start:stop], node=node)
 
 
 @runtime_checkable

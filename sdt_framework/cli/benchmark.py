@@ -123,7 +123,7 @@ def _print_table4(results: Any, sensor_order: list[str]) -> None:
 
 def benchmark(
     ctx: typer.Context,
-    config_file: Path | None = typer.Argument(None, help="TOML config ([benchmark] table)."),
+    config_file: Path | None = typer.Argument(None, help="TOML config (\\[benchmark] table)."),
     data: str | None = typer.Option(None, "--data", help="NLN-EMP root folder or manifest."),
     dataset: str | None = typer.Option(None, "--dataset", help="Registered dataset name."),
     sensors: str | None = typer.Option(

@@ -7,8 +7,9 @@ StageSpec, StageContext, ANCHORS
     its factory is told, and the built-in stages it is placed against.
 StageUse, Tolerance
     A profile's extra stage (name, parameters, tolerances), and a tolerance.
-bind_stages(sensor, table), is_random(sensor)
-    Bind a profile's stages to the registered specs; whether its chain is random.
+bind_stages(sensor, table), is_random(sensor), uses_node(sensor)
+    Bind a profile's stages to the registered specs; whether its chain is
+    random; whether it reads a triaxial node's other axes.
 draw_unit(sensor, seed, k)
     Unit k of a sensor, drawn from its tolerances.
 row_normals(ctx, label, rows, n), TemperatureProfile
@@ -18,7 +19,7 @@ row_normals(ctx, label, rows, n), TemperatureProfile
 from __future__ import annotations
 
 from ..stage_use import StageUse, Tolerance
-from .bind import bind_stages, build_extra, is_random, place
+from .bind import bind_stages, build_extra, is_random, place, uses_node
 from .draws import row_normals
 from .spec import ANCHORS, StageContext, StageSpec
 from .temperature import TemperatureProfile
@@ -39,4 +40,5 @@ __all__ = [
     "is_random",
     "place",
     "row_normals",
+    "uses_node",
 ]

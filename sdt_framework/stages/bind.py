@@ -19,7 +19,7 @@ from ..specs import SensorSpec
 from ..stage_use import StageUse
 from .spec import ANCHORS, StageContext, StageSpec
 
-__all__ = ["bind_stages", "build_extra", "is_random", "place"]
+__all__ = ["bind_stages", "build_extra", "is_random", "place", "uses_node"]
 
 
 def _check(sensor: str, use: StageUse, spec: StageSpec) -> dict[str, Any]:
@@ -75,6 +75,11 @@ def is_random(sensor: SensorSpec) -> bool:
     if sensor.inject_noise and sensor.noise_density_ug_rthz > 0:
         return True
     return any(use.spec is None or use.spec.random for use in sensor.stages)
+
+
+def uses_node(sensor: SensorSpec) -> bool:
+    """Whether ``sensor``'s bound chain has a node stage (one that reads the other axes)."""
+    return any(use.spec is not None and use.spec.node for use in sensor.stages)
 
 
 def build_extra(sensor: SensorSpec, fs: float) -> list[tuple[StageSpec, Any]]:

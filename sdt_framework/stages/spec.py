@@ -11,6 +11,9 @@ placed against, in this order::
 An analog-domain stage runs at the recording's rate before the sampler; a
 digital-domain stage runs at the sensor's output rate after it; a ``sampler``
 stage replaces the sampler itself (it picks the sampling instants). A sensor
+node stage (``node=True``, e.g. cross-axis sensitivity) also reads the same
+acquisitions on the triaxial node's other two axes, ``ctx.node``; it runs
+first, on the raw inputs. A sensor
 profile lists the stages it adds as :class:`StageUse` entries (name,
 parameters, per-axis values, per-unit tolerances); the registry binds each to
 its spec, so unknown names and bad parameters are one-line errors.
@@ -117,6 +120,11 @@ class StageSpec(Spec):
         "analog or sampler stage, before quantise for a digital one).",
     )
     random: bool = Field(default=False, description="Whether the stage draws random numbers.")
+    node: bool = Field(
+        default=False,
+        description="Whether the stage reads the node's other two axes (ctx.node): it then "
+        "runs first in the chain (analog, before mechanical) on the raw inputs.",
+    )
     params: type[BaseModel] = Field(exclude=True, description="Pydantic model of the parameters.")
     factory: Callable[..., Any] = Field(
         exclude=True, description="factory(params, context) -> stage object."
@@ -139,6 +147,16 @@ class StageSpec(Spec):
             places = ", ".join(f"{w} {a}" for w, a in sorted(allowed))
             raise ValueError(
                 f"a {self.domain} stage cannot run {self.where} {self.anchor}; use one of: {places}"
+            )
+        return self
+
+    @model_validator(mode="after")
+    def _check_node(self) -> StageSpec:
+        place = (self.domain, self.where, self.anchor)
+        if self.node and place != ("analog", "before", "mechanical"):
+            raise ValueError(
+                "a node stage (node=True) reads the other axes' raw inputs, so it must be an "
+                "analog stage placed before mechanical"
             )
         return self
 
