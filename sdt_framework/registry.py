@@ -13,23 +13,21 @@ import os
 import sys
 from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any
 
 import pluggy
 from pydantic import ValidationError
 
 from . import hookspecs
 from .discovery import ENV_TRACE, LoadedPlugin, PluginInfo, discover, filter_note, filter_warnings
-from .errors import DuplicateNameError, PluginLoadError, UnknownNameError, validation_summary
-from .parts import PartSpec, resolve, split_name
+from .errors import DuplicateNameError, PluginLoadError, validation_summary
+from .parts import PartSpec
+from .registry_lookup import RegistryLookup
 from .sensor_files import load_sensor_file, sensor_files_from_env
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
-from .stages.bind import bind_stages
 from .stages.spec import StageSpec
 
 __all__ = ["HOOKS", "Registry", "build_registry"]
-
-S = TypeVar("S", bound=Spec)
 
 #: hook name -> spec type it registers
 HOOKS: dict[str, type[Spec]] = {
@@ -50,7 +48,7 @@ def _describe(spec: Spec) -> str:
     return f"plugin {spec.plugin!r} ({spec.distribution})"
 
 
-class Registry:
+class Registry(RegistryLookup):
     """Sensors, feature sets, classifiers and datasets by name."""
 
     def __init__(self, *, trace: bool = False) -> None:
@@ -200,109 +198,6 @@ class Registry:
         loaded.info.status = "error"
         loaded.info.error = reason
         self._plugins.append(loaded.info)
-
-    # -- lookup -----------------------------------------------------------------------
-    def _get(self, kind: type[S], name: str) -> S:
-        conflict = self._conflicts.get((kind, name))
-        if conflict is not None:
-            raise conflict
-        try:
-            return self._items[kind][name]  # type: ignore[return-value]
-        except KeyError:
-            raise UnknownNameError(
-                kind.kind, name, self._items[kind], note=self.filter_note
-            ) from None
-
-    def _all(self, kind: type[S]) -> list[S]:
-        return [self._items[kind][key] for key in sorted(self._items[kind])]  # type: ignore[misc]
-
-    def sensor(self, name: str) -> SensorSpec:
-        """The sensor profile called ``name``, or a part in a mode (``adxl355[range=8g]``).
-
-        A part's sensor is named in canonical form: every mode key, sorted,
-        defaults filled in (``adxl355`` -> ``adxl355[odr=4000,range=2g]``).
-        """
-        if name in self._items[SensorSpec] or (SensorSpec, name) in self._conflicts:
-            return self.bind(self._get(SensorSpec, name))
-        base, modes = split_name(name)
-        if base in self._items[PartSpec] or (PartSpec, base) in self._conflicts:
-            return self.bind(resolve(self.part(base), modes).sensor)
-        note = self.filter_note
-        if modes and base in self._items[SensorSpec]:
-            raise UnknownNameError("part", base, self._items[PartSpec], note=note)
-        known = [*self._items[SensorSpec], *self._items[PartSpec]]
-        raise UnknownNameError("sensor", name, known, note=note)
-
-    def sensors(self) -> list[SensorSpec]:
-        """All sensor profiles, sorted by name (parts: :meth:`parts`), stages bound."""
-        return [self.bind(sensor) for sensor in self._all(SensorSpec)]
-
-    def bind(self, sensor: SensorSpec) -> SensorSpec:
-        """``sensor`` with its listed stages bound to the stages registered here.
-
-        Unknown stage names and parameters a stage rejects are one-line errors.
-        """
-        return bind_stages(sensor, self._items[StageSpec])  # type: ignore[arg-type]
-
-    def stage(self, name: str) -> StageSpec:
-        """The chain stage called ``name``."""
-        return self._get(StageSpec, name)
-
-    def stages(self) -> list[StageSpec]:
-        """All chain stages, sorted by name."""
-        return self._all(StageSpec)
-
-    def part(self, name: str) -> PartSpec:
-        """The part called ``name`` (without a mode)."""
-        return self._get(PartSpec, name)
-
-    def parts(self) -> list[PartSpec]:
-        """All parts, sorted by name."""
-        return self._all(PartSpec)
-
-    def feature_set(self, name: str) -> FeatureSetSpec:
-        """The feature set called ``name``."""
-        return self._get(FeatureSetSpec, name)
-
-    def feature_sets(self) -> list[FeatureSetSpec]:
-        """All feature sets, sorted by name."""
-        return self._all(FeatureSetSpec)
-
-    def classifier(self, name: str) -> ClassifierSpec:
-        """The classifier called ``name``."""
-        return self._get(ClassifierSpec, name)
-
-    def classifiers(self) -> list[ClassifierSpec]:
-        """All classifiers, sorted by name."""
-        return self._all(ClassifierSpec)
-
-    def dataset(self, name: str) -> DatasetSpec:
-        """The dataset called ``name``."""
-        return self._get(DatasetSpec, name)
-
-    def datasets(self) -> list[DatasetSpec]:
-        """All datasets, sorted by name."""
-        return self._all(DatasetSpec)
-
-    def plugins(self) -> list[PluginInfo]:
-        """Every plugin seen, in discovery order, with its status."""
-        return list(self._plugins)
-
-    def problems(self) -> list[str]:
-        """One line per plugin switch naming nothing installed, per plugin that failed or
-        conflicted, and per invalid spec a plugin registered: the CLI prints them as warnings."""
-        lines = list(self.filter_warnings)
-        for p in self._plugins:
-            head = f"plugin {p.name!r} ({p.distribution})"
-            lines += [f"{head}: {reason}" for reason in p.rejected]
-            if p.status == "conflict" or (p.status == "error" and not p.rejected):
-                lines.append(f"{head}: {p.error}")
-        return lines
-
-    def check(self) -> None:
-        """Raise the first duplicate-name conflict, if any."""
-        for error in self._conflicts.values():
-            raise error
 
 
 def build_registry(
