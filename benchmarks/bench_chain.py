@@ -12,7 +12,8 @@ CPUs and with one thread (the algorithmic part: fused cascade, block-wise
 execution, index-arithmetic sampling).
 
 Then the extended chain: the ADXL345 profile with every built-in error stage
-(offset and scale with a temperature ramp, nonlinearity, Gauss-Markov, 1/f,
+(cross-axis sensitivity on a triaxial node, offset and scale with a
+temperature ramp, nonlinearity, Gauss-Markov, 1/f,
 random walk, VRW, extra white noise, clock error with jitter) next to the paper
 chain of the same profile, in the same run, with the throughput ratio.
 
@@ -115,6 +116,7 @@ def main() -> None:
 
 
 EXTENDED = [
+    {"name": "cross-axis", "params": {"pct": 1}},
     {
         "name": "offset",
         "params": {
@@ -141,11 +143,14 @@ def extended_rows(x: NDArray[np.float64], repeats: int) -> None:
     extended = registry.bind(
         SensorSpec.model_validate({**paper.model_dump(), "name": "adxl345-ext", "stages": EXTENDED})
     )
+    node = {"y": np.roll(x, 1, axis=1), "z": -np.roll(x, 2, axis=1)}  # the other two axes
     print(f"\n{'chain':<18}{'Msamp/s':>15}{'1 thread':>10}")
     speeds = []
     for sensor in (paper, extended):
-        all_t, _ = best_time(lambda s=sensor: degrade(x, FS, s, SEED)[0], repeats)
-        one_t, _ = best_time(lambda s=sensor: degrade(x, FS, s, SEED, threads=1)[0], repeats)
+        all_t, _ = best_time(lambda s=sensor: degrade(x, FS, s, SEED, other_axes=node)[0], repeats)
+        one_t, _ = best_time(
+            lambda s=sensor: degrade(x, FS, s, SEED, threads=1, other_axes=node)[0], repeats
+        )
         speeds.append(x.size / all_t)
         print(f"{sensor.name:<18}{x.size / all_t / 1e6:>15.1f}{x.size / one_t / 1e6:>10.1f}")
     print(f"extended / paper throughput: {speeds[1] / speeds[0]:.2f}")

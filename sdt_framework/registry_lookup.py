@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import TypeVar
 
 from .discovery import PluginInfo
-from .errors import DuplicateNameError, UnknownNameError
+from .errors import DuplicateNameError, SDTError, UnknownNameError
 from .parts import PartSpec, resolve, split_name
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
 from .stages.bind import bind_stages
@@ -66,8 +66,23 @@ class RegistryLookup:
         raise UnknownNameError("sensor", name, known, note=note)
 
     def sensors(self) -> list[SensorSpec]:
-        """All sensor profiles, sorted by name (parts: :meth:`parts`), stages bound."""
-        return [self.bind(sensor) for sensor in self._all(SensorSpec)]
+        """All sensor profiles, sorted by name (parts: :meth:`parts`), stages bound.
+
+        A profile whose stages do not bind (a stage no installed plugin
+        registers) is left out here and named by :meth:`problems`; asking for
+        it by name raises the one-line error.
+        """
+        return [bound for _, bound, _ in self._bound_sensors() if bound is not None]
+
+    def _bound_sensors(self) -> list[tuple[SensorSpec, SensorSpec | None, str]]:
+        """(profile, bound profile or None, why not) for every registered sensor."""
+        out = []
+        for sensor in self._all(SensorSpec):
+            try:
+                out.append((sensor, self.bind(sensor), ""))
+            except SDTError as exc:
+                out.append((sensor, None, str(exc)))
+        return out
 
     def bind(self, sensor: SensorSpec) -> SensorSpec:
         """``sensor`` with its listed stages bound to the stages registered here.
@@ -129,6 +144,9 @@ class RegistryLookup:
             lines += [f"{head}: {reason}" for reason in p.rejected]
             if p.status == "conflict" or (p.status == "error" and not p.rejected):
                 lines.append(f"{head}: {p.error}")
+        for sensor, bound, why in self._bound_sensors():
+            if bound is None:
+                lines.append(f"sensor {sensor.name!r} ({sensor.plugin}) left out: {why}")
         return lines
 
     def check(self) -> None:

@@ -42,16 +42,35 @@ def _check(sensor: str, use: StageUse, spec: StageSpec) -> dict[str, Any]:
     return params
 
 
+def _check_stage_tolerances(sensor: SensorSpec, table: Mapping[str, StageSpec]) -> None:
+    """A profile tolerance ``"stage.parameter"`` must name a stage and one of its numbers."""
+    for key in sorted(k for k in sensor.tolerances if "." in k):
+        name, _, param = key.partition(".")
+        spec = table.get(name)
+        if spec is None:
+            note = f"(tolerance {key!r} of {sensor.name!r})"
+            raise UnknownNameError("stage", name, table, note=note)
+        fields = spec.params.model_fields
+        numeric = sorted(k for k, f in fields.items() if f.annotation in (float, int))
+        if param not in numeric:
+            raise SDTError(
+                f"sensor {sensor.name!r}: tolerance {key!r} names no numeric parameter of "
+                f"stage {name!r}; its numeric parameters: {', '.join(numeric) or '(none)'}"
+            )
+
+
 def bind_stages(sensor: SensorSpec, table: Mapping[str, StageSpec]) -> SensorSpec:
     """``sensor`` with each listed stage bound to its spec and its parameters validated.
 
     Raises
     ------
     UnknownNameError
-        A stage name no plugin registered (lists the registered ones).
+        A stage name no plugin registered (lists the registered ones), listed
+        or named by a ``"stage.parameter"`` tolerance.
     SDTError
         Parameters, per-axis values or tolerances the stage's model rejects.
     """
+    _check_stage_tolerances(sensor, table)
     if not sensor.stages:
         return sensor
     bound = []
