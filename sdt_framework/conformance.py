@@ -174,8 +174,10 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
     info = fresh.register_plugin(plugin)
     if info.status != "loaded":
         raise ConformanceError(f"plugin {info.name!r} failed to register: {info.error}")
+    installed = installed if installed is not None else build_registry()
     specs: list[Spec] = [
-        *fresh.sensors(),
+        # its profiles' stages may come from other plugins: bound to the installed ones
+        *(installed.bind(sensor) for sensor in fresh.sensors(bound=False)),
         *fresh.feature_sets(),
         *fresh.classifiers(),
         *fresh.datasets(),
@@ -184,7 +186,6 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
     ]
     if not specs:
         raise ConformanceError(f"plugin {info.name!r} registers nothing")
-    installed = installed if installed is not None else build_registry()
     taken = {
         SensorSpec: installed.sensors(),
         FeatureSetSpec: installed.feature_sets(),

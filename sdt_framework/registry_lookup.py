@@ -65,14 +65,17 @@ class RegistryLookup:
         known = [*self._items[SensorSpec], *self._items[PartSpec]]
         raise UnknownNameError("sensor", name, known, note=note)
 
-    def sensors(self) -> list[SensorSpec]:
+    def sensors(self, *, bound: bool = True) -> list[SensorSpec]:
         """All sensor profiles, sorted by name (parts: :meth:`parts`), stages bound.
 
         A profile whose stages do not bind (a stage no installed plugin
         registers) is left out here and named by :meth:`problems`; asking for
-        it by name raises the one-line error.
+        it by name raises the one-line error. ``bound=False`` returns every
+        profile as registered, unbound (to bind against another registry's stages).
         """
-        return [bound for _, bound, _ in self._bound_sensors() if bound is not None]
+        if not bound:
+            return self._all(SensorSpec)
+        return [spec for _, spec, _ in self._bound_sensors() if spec is not None]
 
     def _bound_sensors(self) -> list[tuple[SensorSpec, SensorSpec | None, str]]:
         """(profile, bound profile or None, why not) for every registered sensor."""

@@ -6,6 +6,8 @@ import pytest
 from sdt_plugins.sensors.adxl345 import ADXL345
 
 from sdt_framework import SDTError, UnknownNameError, build_registry
+from sdt_framework.bench.config import BenchmarkConfig
+from sdt_framework.bench.plan import plan_benchmark
 
 
 def profile(name: str, **update):
@@ -23,14 +25,16 @@ def test_a_profile_with_an_unknown_stage_is_left_out_of_the_listing_and_named():
         registry.sensor("bad-stage")
 
 
-def test_a_tolerance_on_an_unknown_stage_is_refused_at_lookup():
+def test_a_tolerance_on_an_unknown_stage_is_refused_when_units_are_drawn(tmp_path):
+    """The nominal profile does not use the stage; a benchmark drawing units names it."""
     registry = build_registry()
     registry.add(profile("bad-tol", tolerances={"ofset.offset_mg": {"spread": 1}}))
+    assert registry.sensor("bad-tol").name == "bad-tol"
+    config = BenchmarkConfig(sensors=["bad-tol"], units=2, machines=["Motor-2"], report=False)
     with pytest.raises(UnknownNameError) as err:
-        registry.sensor("bad-tol")
+        plan_benchmark(config, registry)
     message = str(err.value)
-    assert "\n" not in message and "unknown stage 'ofset'" in message
-    assert "tolerance 'ofset.offset_mg'" in message
+    assert "\n" not in message and "unknown stage 'ofset'" in message and "'offset'" in message
 
 
 def test_a_tolerance_on_a_parameter_the_stage_lacks_lists_its_numeric_parameters():
