@@ -9,13 +9,16 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from scipy import signal
 
 from ..io import atomic_path
 from .noise_check import BAND_HZ, NoiseCheck, WindowStats
+
+if TYPE_CHECKING:
+    from .allan_check import AllanCheck
 
 __all__ = ["NoiseSeries", "draw_noise", "plot_formats", "plot_noise_check"]
 
@@ -80,19 +83,23 @@ def draw_noise(ax_t: Any, ax_f: Any, series: Sequence[NoiseSeries], check: Noise
         ax.legend(fontsize=8, loc=where)
 
 
-def plot_noise_check(result: NoiseCheck, path: str | os.PathLike[str]) -> Path:
-    """Save a two-panel figure of ``result`` to ``path`` (format from its suffix).
+def plot_noise_check(
+    result: NoiseCheck, path: str | os.PathLike[str], allan: AllanCheck | None = None
+) -> Path:
+    """Save a two-panel figure of ``result`` (three with ``allan``) to ``path``.
 
     The SDT's zero-motion noise and, when the check has one, the recording's
-    (see :func:`draw_noise`). Uses the Agg backend through
-    ``matplotlib.figure.Figure`` (no pyplot state).
+    (see :func:`draw_noise`); with ``allan``, a third panel of their Allan
+    deviation (:func:`~sdt_framework.chain.allan_plot.draw_allan`). Uses the
+    Agg backend through ``matplotlib.figure.Figure`` (no pyplot state).
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=(10, 4), layout="constrained")
+    fig = Figure(figsize=(10, 4) if allan is None else (15, 4.5), layout="constrained")
     FigureCanvasAgg(fig)
-    ax_t, ax_f = fig.subplots(1, 2)
+    axes = fig.subplots(1, 2 if allan is None else 3)
+    ax_t, ax_f = axes[:2]
     series: list[NoiseSeries] = []
     if result.recording is not None and result.recording_signal is not None:
         assert result.recording_fs is not None
@@ -109,6 +116,10 @@ def plot_noise_check(result: NoiseCheck, path: str | os.PathLike[str]) -> Path:
     series.append(("SDT " + result.sensor, result.sdt_signal, result.sdt_fs, result.sdt, "C0", "-"))
     draw_noise(ax_t, ax_f, series, result)
     ax_t.set_title("(a) zero-motion noise")
+    if allan is not None:
+        from .allan_plot import draw_allan
+
+        draw_allan(axes[2], allan)
     path = Path(path)
     with atomic_path(path) as tmp:
         fig.savefig(tmp, format=path.suffix.lstrip(".") or "png", dpi=120)

@@ -7,6 +7,7 @@ from typing import Annotated, Any
 
 import typer
 
+from ..errors import SDTError
 from .common import console, err_console, print_json, registry
 
 __all__ = ["degrade_command", "register", "validate_noise_command"]
@@ -108,6 +109,7 @@ def _print_table(data: dict[str, Any]) -> None:
 def validate_noise_command(
     ctx: typer.Context,
     sensor: str = typer.Option(..., "--sensor", help="Sensor profile name, e.g. adxl345."),
+    axis: str = typer.Option("x", "--axis", help="Axis of the profile to check: x, y or z."),
     recording: Annotated[
         Path | None,
         typer.Option("--recording", help="Zero-motion recording of one axis, .csv or .npy."),
@@ -126,7 +128,8 @@ def validate_noise_command(
     plot: Annotated[
         Path | None,
         typer.Option(
-            "--plot", help="Save trace and ASD here (.png, .pdf, .svg, ...; checked first)."
+            "--plot",
+            help="Save trace, ASD and Allan deviation here (.png, .pdf, .svg, ...; checked first).",
         ),
     ] = None,
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
@@ -143,9 +146,14 @@ def validate_noise_command(
     --windows windows of --window-length samples; per window: RMS (mean
     removed, mg) and NSD (sqrt of the mean Welch PSD over 10..1500 Hz,
     µg/√Hz). With --recording the same statistics of the recording, the
-    relative error and Welch t-test p-values are added. The size is checked
-    first: one that cannot fit in memory is refused, a large or long one needs
-    --yes; the --plot path is checked before the computation too.
+    relative error and Welch t-test p-values are added. An Allan table reads
+    the white-noise density N (and VRW) and the bias instability B off the
+    overlapping Allan deviation of the whole SDT output and of the whole
+    recording (tau up to a twentieth of each record: more --windows reach
+    longer taus), beside the values the profile configures for --axis (IEEE
+    952; docs/chain.md). The size is checked first: one that cannot fit in
+    memory is refused, a large or long one needs --yes; the --plot path is
+    checked before the computation too.
 
     Example:
 
@@ -156,21 +164,27 @@ def validate_noise_command(
       sdt validate-noise --sensor adxl357 --windows 4096 --yes --plot noise.png
     """
     from ..chain import noise_check, plot_noise_check  # imported on use, as in degrade
+    from ..chain.allan import allan_seconds
+    from ..chain.allan_check import allan_check
     from ..chain.files import load_signal, to_g
     from ..chain.noise_check import zero_motion_cost
     from ..chain.noise_plot import plot_formats
     from ..data.sizes import Cost
+    from .allan_table import print_allan_table
     from .guards import check_cost, check_output_file, os_errors
 
     with os_errors():
         spec = registry(ctx).sensor(sensor)
+        if axis not in ("x", "y", "z"):
+            raise SDTError(f"--axis {axis!r}: use x, y or z")
+        spec = spec.for_axis(axis)
         if plot is not None:
             inputs = [recording] if recording is not None else []
             check_output_file(plot, "--plot", [f".{f}" for f in plot_formats()], inputs)
         n_in, peak, seconds = zero_motion_cost(spec, reference_fs, windows, window_length)
         check_cost(
             f"validate-noise --windows {windows} --window-length {window_length}",
-            Cost(n_in, peak, seconds),
+            Cost(n_in, peak, seconds + allan_seconds(windows * window_length)),
             yes,
             "--windows or --window-length",
         )
@@ -189,13 +203,15 @@ def validate_noise_command(
             window_length=window_length,
             label=str(recording or ""),
         )
+        allan = allan_check(result, spec)
         if plot is not None:
-            plot_noise_check(result, plot)
-    data = result.to_dict()
+            plot_noise_check(result, plot, allan)
+    data = {**result.to_dict(), "axis": axis, "allan": allan.to_dict()}
     if as_json:
         print_json(data)
         return
     _print_table(data)
+    print_allan_table(data["allan"], result.sensor, axis)
     if plot is not None:
         console.print(f"figure: {plot}", highlight=False)
 

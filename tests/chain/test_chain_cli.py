@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import math
 import sys
 from pathlib import Path
 
@@ -191,3 +192,55 @@ def test_validate_noise_lsb_without_scale_is_a_user_error(monkeypatch, capsys, t
         "lsb",
     )
     assert code == 2 and "--scale" in err
+
+
+def test_validate_noise_allan_table_has_configured_and_read_off_columns(monkeypatch, capsys):
+    code, stdout, _ = run(monkeypatch, capsys, "validate-noise", "--sensor", "adxl345")
+    assert code == 0 and "Allan deviation, adxl345, x axis" in stdout
+    assert "Configured" in stdout and "SDT model" in stdout and "290.0" in stdout
+    row = next(line for line in stdout.splitlines() if "Bias instability" in line)
+    assert row.split("│")[2].strip() == "-" and "n/a (1)" in row  # no term configured, none read
+    assert "(1) SDT model: no flat region" in stdout and "tau 0.000313-0.256 s" in stdout
+    code, stdout, _ = run(monkeypatch, capsys, "validate-noise", "--sensor", "adxl345", "--json")
+    allan = json.loads(stdout)["allan"]
+    assert allan["configured"]["nsd_ug_rthz"] == pytest.approx(290.0)
+    assert allan["configured"]["bias_instability_ug"] is None
+    # 290 ug/sqrt(Hz) and the 3.9 mg step's D^2/12 (28 ug/sqrt(Hz) at 3200 Hz), in power
+    assert allan["sdt"]["nsd_ug_rthz"] == pytest.approx(math.hypot(290, 28.2), rel=0.02)
+    assert allan["sdt"]["bias_instability_ug"] is None and allan["sdt"]["bias_reason"]
+
+
+def test_validate_noise_recording_gets_its_own_allan_column(monkeypatch, capsys, tmp_path):
+    lsb = np.round(np.random.default_rng(1).normal(5, 3.2, 20000))
+    rec = tmp_path / "rec.csv"
+    np.savetxt(rec, lsb, fmt="%d", header="x", comments="")
+    args = ["validate-noise", "--sensor", "adxl345", "--recording", str(rec), "--unit", "lsb"]
+    args += ["--scale", "0.0039", "--fs", "3200"]
+    code, stdout, _ = run(monkeypatch, capsys, *args)
+    allan_part = stdout[stdout.index("Allan deviation") :]
+    assert code == 0 and "Recording" in allan_part and "Recording: 20,000 samples" in allan_part
+    code, stdout, _ = run(monkeypatch, capsys, *args, "--json")
+    recording = json.loads(stdout)["allan"]["recording"]
+    # white: sqrt(3.2^2 + 1/12) LSB x 3.9 mg/LSB over sqrt(1600 Hz), one-sided
+    expected = math.sqrt(3.2**2 + 1 / 12) * 3.9e3 / math.sqrt(1600)
+    assert recording["samples"] == 20000 and recording["nsd_ug_rthz"] == pytest.approx(
+        expected, rel=0.03
+    )
+
+
+def test_validate_noise_configured_terms_follow_the_profile_and_axis(monkeypatch, capsys, tmp_path):
+    toml = tmp_path / "mine.toml"
+    toml.write_text(
+        'name = "mine"\nsampling_rate_hz = 3200\nfull_scale_g = 16\nadc_bits = 13\n'
+        "noise_density_ug_rthz = 290\nmech_cutoff_hz = 7000\nanalog_cutoff_hz = 1600\n"
+        "per_axis = { z = { noise_density_ug_rthz = 430 } }\n"
+        '[[stages]]\nname = "gauss-markov"\nparams = { sigma_ug = 300, tau_s = 2 }\n'
+    )
+    base = ["--sensor-file", str(toml), "validate-noise", "--sensor", "mine", "--json"]
+    code, stdout, _ = run(monkeypatch, capsys, *base, "--axis", "z")
+    configured = json.loads(stdout)["allan"]["configured"]
+    assert code == 0 and configured["nsd_ug_rthz"] == pytest.approx(430.0)
+    assert configured["bias_instability_ug"] == pytest.approx(300 * 0.618 / 0.664, rel=0.01)
+    assert any(t.startswith("gauss-markov.0") for t in configured["terms"])
+    code, _, err = run(monkeypatch, capsys, *base, "--axis", "w")
+    assert code == 2 and "--axis 'w'" in err and "Traceback" not in err

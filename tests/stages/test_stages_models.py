@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
-import allantools
 import numpy as np
 import pytest
 from sdt_plugins.stages import clock, errors, noise
 
 from sdt_framework.chain import RunContext
+from sdt_framework.chain.allan import gauss_markov_adev
+from sdt_framework.chain.allan import mean_oadev as adev
 from sdt_framework.stages import StageContext
 
 ROWS = tuple(range(4))
@@ -22,12 +23,6 @@ def build(module, name: str, params: dict, fs: float = 1000.0, target: float = 1
 def run(stage, rows: int = 4, n: int = 200_000, x: np.ndarray | None = None) -> np.ndarray:
     x = np.zeros((rows, n)) if x is None else x
     return stage.apply(x, RunContext(seed=11, acquisition_ids=tuple(range(x.shape[0])), threads=1))
-
-
-def adev(y: np.ndarray, fs: float, taus: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Overlapping Allan deviation of a record (allantools), averaged over rows."""
-    curves = [allantools.oadev(row, rate=fs, data_type="freq", taus=taus) for row in y]
-    return curves[0][0], np.sqrt(np.mean([c[1] ** 2 for c in curves], axis=0))
 
 
 def slope(t: np.ndarray, d: np.ndarray) -> float:
@@ -74,16 +69,6 @@ def test_flicker_floor_is_0664_b():
     expected = np.sqrt(2 * np.log(2) / np.pi) * b_ug * 1e-6
     np.testing.assert_allclose(d, expected, rtol=0.15)
     assert abs(slope(t, d)) < 0.08
-
-
-def gauss_markov_adev(taus: np.ndarray, sigma: float, tc: float) -> np.ndarray:
-    """Analytic ADEV of a first-order Gauss-Markov process: (4 V(t) - V(2t)) / (2 t^2),
-    V(t) = 2 sigma^2 T^2 (t/T - 1 + exp(-t/T)) the variance of its integral over t."""
-
-    def v(t):
-        return 2 * sigma**2 * tc**2 * (t / tc - 1 + np.exp(-t / tc))
-
-    return np.sqrt((4 * v(taus) - v(2 * taus)) / (2 * taus**2))
 
 
 def test_gauss_markov_bias_instability_floor():
