@@ -44,7 +44,6 @@ __all__ = [
     "allan_curve",
     "allan_seconds",
     "allan_taus",
-    "finite_or_none",
     "gauss_markov_adev",
     "local_slopes",
     "mean_oadev",
@@ -78,7 +77,9 @@ def allan_seconds(n: int) -> float:
     return n * len(allan_taus(n, 1.0)) / SAMPLE_TAUS_PER_S
 
 
-def mean_oadev(y: NDArray[np.float64], fs: float, taus: NDArray[np.float64]) -> tuple:
+def mean_oadev(
+    y: ArrayLike, fs: float, taus: NDArray[np.float64]
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Overlapping ADEV (``allantools.oadev``) of each row of ``y``, RMS-averaged over rows.
 
     Returns ``(taus_used, adev)``; rows are independent records of one process.
@@ -174,7 +175,8 @@ def read_floor(
         inner[:lead] = False  # flat below the white-noise taus: the sensor's bandwidth
         where = f" beyond the sensor's bandwidth (flat up to {taus[lead - 1]:.3g} s)"
     if not inner.any():
-        return math.nan, math.nan, f"no flat region{where}: {_span(taus, slopes)}, too short"
+        span = f"{taus[0]:.3g}-{taus[-1]:.3g} s"
+        return math.nan, math.nan, f"no flat region can be read{where}: taus {span}, too few"
     flat &= inner
     if not flat.any():
         span = _span(taus[inner], slopes[inner])
@@ -220,14 +222,15 @@ class AllanCurve:
             **white_values(self.n_g),
             "white_fit_tau_s": list(self.n_taus) if self.n_taus else None,
             "white_reason": self.n_reason,
-            "bias_instability_ug": finite_or_none(self.b_g * 1e6),
-            "floor_ug": finite_or_none(self.floor_g * 1e6),
-            "floor_tau_s": finite_or_none(self.floor_tau),
+            "bias_instability_ug": _finite(self.b_g * 1e6),
+            "floor_ug": _finite(self.floor_g * 1e6),
+            "floor_tau_s": _finite(self.floor_tau),
             "bias_reason": self.b_reason,
         }
 
 
-def finite_or_none(value: float) -> float | None:
+def _finite(value: float) -> float | None:
+    """``value`` for JSON: None when it is NaN (not read off) or infinite."""
     return None if value is None or not math.isfinite(value) else float(value)
 
 
@@ -235,9 +238,9 @@ def white_values(n_g: float | None) -> dict[str, float | None]:
     """N as sigma(1 s) and as one-sided NSD in ug/sqrt(Hz), and as VRW in (m/s)/sqrt(h)."""
     n = math.nan if n_g is None else n_g
     return {
-        "n_ug_rthz": finite_or_none(n * 1e6),
-        "nsd_ug_rthz": finite_or_none(n * math.sqrt(2.0) * 1e6),
-        "vrw_mps_rthr": finite_or_none(n * G0 * ROOT_HOUR),
+        "n_ug_rthz": _finite(n * 1e6),
+        "nsd_ug_rthz": _finite(n * math.sqrt(2.0) * 1e6),
+        "vrw_mps_rthr": _finite(n * G0 * ROOT_HOUR),
     }
 
 
