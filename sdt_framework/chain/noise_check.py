@@ -28,7 +28,8 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import signal, stats
 
 from ..specs import SensorSpec
-from .chain import degrade
+from ..stages import uses_node
+from .chain import compile_chain, degrade
 from .errors import ChainInputError, check_signal
 
 __all__ = [
@@ -208,7 +209,10 @@ def noise_check(
                 f"got shape {rec.shape}",
             )
     n_in = zero_motion_length(sensor, fs_ref, needed)
-    out, fs_out = degrade(np.zeros(n_in), fs_ref, sensor, seed, label="x_ref = 0")
+    zeros = np.zeros(n_in)
+    # zero motion on every axis: a node stage (cross-axis) reads the other two as zeros too
+    node = {"y": zeros, "z": zeros} if uses_node(compile_chain(sensor, fs_ref).sensor) else None
+    out, fs_out = degrade(zeros, fs_ref, sensor, seed, label="x_ref = 0", other_axes=node)
     result = NoiseCheck(
         sensor.name,
         int(seed),

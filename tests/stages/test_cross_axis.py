@@ -10,7 +10,7 @@ from sdt_framework import SDTError, build_registry
 from sdt_framework.bench.config import BenchmarkConfig
 from sdt_framework.bench.featurize import noise_seed
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
-from sdt_framework.chain import ChainInputError, compile_chain, degrade
+from sdt_framework.chain import ChainInputError, compile_chain, degrade, noise_check
 from sdt_framework.chain.shared import SharedPrefix
 from sdt_framework.features import extract
 from sdt_framework.stages import StageSpec
@@ -169,3 +169,10 @@ def test_a_tolerance_alone_adds_the_stage_and_needs_nodes(tmp_path):
         plan_benchmark(_config(tmp_path, axes={}, units=2), registry)
     plan = plan_benchmark(_config(tmp_path, units=2), registry)
     assert plan.nodes
+
+
+def test_zero_motion_check_reads_zeros_on_the_other_axes():
+    """validate-noise: on a node at rest the coupling adds nothing, bit for bit."""
+    plain = noise_check(PLAIN, seed=4).to_dict()
+    with_stage = noise_check(crossed(5.0), seed=4).to_dict()
+    assert with_stage["sdt"] == plain["sdt"]
