@@ -7,7 +7,7 @@ name live in :mod:`sdt_framework.stages`.
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Annotated, Any, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
@@ -20,7 +20,10 @@ class Tolerance(BaseModel):
     A unit's value is the nominal value plus ``spread`` times a draw from the
     distribution: standard normal (truncated at +-3) or uniform on [-1, 1].
     ``spread`` is in the parameter's unit; ``spread_pct`` is in percent of the
-    nominal value instead.
+    nominal value instead. ``per_axis`` gives the spread on the Y or Z axis of
+    a stage parameter (``spread`` is then the X axis): each axis listed there
+    is drawn on its own, as the separate sensing element it is; an axis not
+    listed shares the X axis's value.
     """
 
     model_config = ConfigDict(frozen=True, extra="forbid")
@@ -30,12 +33,22 @@ class Tolerance(BaseModel):
     )
     spread: float | None = Field(default=None, ge=0, description="In the parameter's unit.")
     spread_pct: float | None = Field(default=None, ge=0, description="In % of the nominal value.")
+    per_axis: dict[Literal["y", "z"], Annotated[float, Field(ge=0)]] | None = Field(
+        default=None, description="Spread on the Y or Z axis (a stage parameter), its unit."
+    )
 
     @model_validator(mode="after")
     def _one_spread(self) -> Tolerance:
         if (self.spread is None) == (self.spread_pct is None):
             raise ValueError("give exactly one of spread or spread_pct")
         return self
+
+    def on_axis(self, axis: str) -> Tolerance:
+        """This tolerance as it applies on ``axis`` (its own spread there, if any)."""
+        spread = (self.per_axis or {}).get(axis)  # type: ignore[call-overload]
+        if spread is None:
+            return self
+        return Tolerance(distribution=self.distribution, spread=spread)
 
     def half_width(self, nominal: float) -> float:
         """The spread in the parameter's unit, for a nominal value."""

@@ -197,3 +197,63 @@ def provenance_rows(resolved: Any) -> tuple[list[list[str]], list[str]]:
             notes.append(f"{src.field}: {src.note}")
         rows.append([src.field, text, src.doc or src.source, src.where, src.basis, src.set_by])
     return rows, notes
+
+
+def _axes_text(values: dict[str, float], unit: str = "") -> str:
+    unit = f" {unit}" if unit else ""
+    if len(set(values.values())) == 1:
+        return f"{_fmt(values['x'])}{unit}"
+    return "/".join(_fmt(values[a]) for a in "xyz") + f"{unit} (x/y/z)"
+
+
+def _term_note(term: Any) -> str:
+    parts = [f"{term.term}: printed '{term.printed}'"]
+    if term.range_c is not None:
+        parts.append(f"stated for {term.range_c[0]:g} to {term.range_c[1]:g} °C")
+    if term.stand_in:
+        parts.append(f"stand-in: the part's documents lack it ({term.absent}); {term.why}")
+    if term.note:
+        parts.append(term.note)
+    return "; ".join(parts)
+
+
+def error_rows(resolved: Any) -> tuple[str, list[list[str]], list[str]]:
+    """A part's error terms in a mode: a title saying on or off, one row per term, notes."""
+    if not resolved.terms:
+        return "", [], []
+    if any(t.enabled for t in resolved.terms):
+        keys = ", ".join(f"{k}={v}" for k, v in sorted(resolved.error_mode.items()))
+        title = (
+            f"Error terms: on ({keys}). Each unit of sdt benchmark --units N draws its own "
+            f"values; the nominal unit has none; the tempcos act only away from 25 °C"
+        )
+    else:
+        given = {t.term for t in resolved.terms if t.figure is not None}
+        keys = [f"{resolved.part.name}[errors=datasheet] (tempcos, nonlinearity)"]
+        if "cross_axis" in given:
+            keys.append("cross_axis=datasheet (a triaxial node)")
+        if given & {"offset_tempco", "sensitivity_tempco"}:
+            keys.append("temp=85c (the tempcos act only away from 25 °C)")
+        title = (
+            f"Error terms: off. Enable with {', '.join(keys)}; units are drawn by "
+            f"sdt benchmark --units N"
+        )
+    rows, notes = [], []
+    for term in resolved.terms:
+        if term.figure is None:
+            figure, per_unit = "absent *", "-"
+            why = (
+                f"; stand-in: {term.why}" if term.stand_in else f"; {term.why}" if term.why else ""
+            )
+            notes.append(f"* {term.term}: {term.absent}{why}")
+        else:
+            figure = "±" + _axes_text(term.figure, term.unit)
+            size = "SD " if term.distribution == "normal" else "±"
+            per_unit = f"{term.distribution} {size}{_axes_text(term.spread or {})}"
+            factor = (term.spread or {})["x"] / term.figure["x"]
+            if abs(factor - 1) > 1e-9:
+                per_unit += f" ({factor:g} × figure)"
+            notes.append(_term_note(term))
+        on = "on" if term.enabled else "off"
+        rows.append([term.term, figure, f"{per_unit} → {term.stage}", on, term.doc, term.where])
+    return title, rows, notes

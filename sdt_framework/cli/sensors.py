@@ -134,6 +134,8 @@ def show_sensor(
                     "sensor": views.sensor_json(resolved.sensor),
                     "mode": resolved.mode,
                     "provenance": [s.as_dict() for s in resolved.sources],
+                    "error_mode": resolved.error_mode,
+                    "error_terms": [t.as_dict() for t in resolved.terms],
                 }
             )
             return
@@ -172,6 +174,11 @@ def _print_part(resolved) -> None:
     )
     for note in notes:
         _say(note)
+    title, rows, notes = views.error_rows(resolved)
+    if rows:
+        table(title, ["term", "figure", "per unit → stage", "", "doc", "where"], rows)
+        for note in notes:
+            _say(note)
     table(
         f"Modes of {part.name}: {part.name}[key=option,...]",
         ["key", "options", "default", "why the default"],

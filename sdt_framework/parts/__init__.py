@@ -2,11 +2,14 @@
 
 A plugin registers a :class:`PartSpec` through the ``register_parts`` hook;
 ``registry.sensor("adxl355[range=8g]")`` resolves a part in a mode to a
-:class:`~sdt_framework.specs.SensorSpec` named in canonical form.
+:class:`~sdt_framework.specs.SensorSpec` named in canonical form; the mode keys
+``errors``, ``cross_axis`` and ``temp`` enable the part's datasheet error terms.
 """
 
 from __future__ import annotations
 
+from .error_modes import ERROR_KEYS, ErrorTermsError, TermSource
+from .errors import TERMS, ErrorTerm
 from .files import load_part_file, load_part_text
 from .model import CHAIN_VALUES, AxisValues, Document, Entry, Mode, PartSpec, Price
 from .names import canonical_name, split_name, split_names
@@ -14,15 +17,20 @@ from .resolve import FieldSource, ModeError, Resolved, all_modes, resolve, selec
 
 __all__ = [
     "CHAIN_VALUES",
+    "ERROR_KEYS",
+    "TERMS",
     "AxisValues",
     "Document",
     "Entry",
+    "ErrorTerm",
+    "ErrorTermsError",
     "FieldSource",
     "Mode",
     "ModeError",
     "PartSpec",
     "Price",
     "Resolved",
+    "TermSource",
     "all_modes",
     "canonical_name",
     "load_part_file",

@@ -13,7 +13,9 @@ datasheet gives as a fraction of the output data rate is stored as
 The model checks the structure once, when a part is registered: every chain
 value is determined for every mode, every document exists, a value is set by
 at most one mode key. :mod:`sdt_framework.parts.resolve` turns a part and a
-mode into a :class:`~sdt_framework.specs.SensorSpec`.
+mode into a :class:`~sdt_framework.specs.SensorSpec`. A part's datasheet error
+terms (``[errors.<term>]``, :mod:`sdt_framework.parts.errors`) stay off unless
+the mode enables them.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from typing import Any, ClassVar, Literal
 from pydantic import Field, field_validator, model_validator
 
 from ..specs import Spec
+from .errors import ErrorTerm, check_terms
 from .values import AxisValues, Basis, Document, Entry, Model, Price
 
 __all__ = [
@@ -136,6 +139,11 @@ class PartSpec(Spec):
     modes: dict[str, Mode] = Field(default_factory=dict)
     price: Price | None = None
     notes: tuple[str, ...] = Field(default=(), description="Caveats a user should know.")
+    errors: dict[str, ErrorTerm] = Field(
+        default_factory=dict,
+        description="Datasheet error terms (offset_tempco, sensitivity_tempco, nonlinearity, "
+        "cross_axis); off unless a mode enables them (sdt_framework.parts.errors).",
+    )
 
     @model_validator(mode="after")
     def _check_structure(self) -> PartSpec:
@@ -158,6 +166,7 @@ class PartSpec(Spec):
                         raise ValueError(f"modes.{key}.only_with.{label}: {other} has no {bad}")
         for field, entry in self.values.items():
             self._check_entry(field, entry, f"values.{field}", None)
+        check_terms(self.errors, self.documents, self.modes)
         for field in CHAIN_VALUES:
             keys = setters.get(field, [])
             if len(keys) > 1:
@@ -201,6 +210,13 @@ class PartSpec(Spec):
                     field not in PER_AXIS
                 ):
                     raise ValueError(f"{where}: only {', '.join(PER_AXIS)} may differ per axis")
+
+    def content_dict(self) -> dict[str, Any]:
+        """Behaviour-defining fields; a part without error terms hashes as before they existed."""
+        data = super().content_dict()
+        if not data.get("errors"):
+            data.pop("errors", None)
+        return data
 
     def default_mode(self) -> dict[str, str]:
         """Every mode key with its default option."""

@@ -5,19 +5,32 @@ option not allowed with another) and fills in defaults; :func:`resolve`
 evaluates every chain value for that mode (fractions of the output data rate
 times the rate, per-option tables, stand-ins) and returns the
 :class:`~sdt_framework.specs.SensorSpec` named in canonical form together
-with one :class:`FieldSource` per value saying where it came from.
+with one :class:`FieldSource` per value saying where it came from. The
+error-term keys (``errors``, ``cross_axis``, ``temp``) are split off first and
+handled by :mod:`sdt_framework.parts.error_modes`: off by default, left out of
+the name at their defaults.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, replace
+from dataclasses import field as _field
 from itertools import product
 
 from pydantic import ValidationError
 
 from ..errors import SDTError
 from ..specs import SensorSpec
+from ..stage_use import StageUse, Tolerance
+from .error_modes import (
+    ERROR_KEYS,
+    TermSource,
+    error_stages,
+    shown_keys,
+    split_error_keys,
+    term_sources,
+)
 from .model import CHAIN_VALUES, OPTIONAL_VALUES, AxisValues, Entry, PartSpec
 from .names import canonical_name
 
@@ -62,11 +75,13 @@ class Resolved:
     mode: dict[str, str]
     sensor: SensorSpec
     sources: tuple[FieldSource, ...]
+    error_mode: dict[str, str] = _field(default_factory=lambda: dict(ERROR_KEYS))
+    terms: tuple[TermSource, ...] = ()
 
 
 def select_mode(part: PartSpec, given: Mapping[str, str]) -> dict[str, str]:
     """The full mode: ``given`` checked against the part, defaults filled in."""
-    keys = ", ".join(sorted(part.modes)) or "none"
+    keys = ", ".join(sorted([*part.modes, *(ERROR_KEYS if part.errors else ())])) or "none"
     for key, option in given.items():
         if key not in part.modes:
             raise ModeError(f"part {part.name!r} has no mode key {key!r}; its keys: {keys}")
@@ -157,7 +172,8 @@ def _evaluate(part: PartSpec, field: str, entry: Entry, set_by: str, mode, odr):
 
 def resolve(part: PartSpec, given: Mapping[str, str] | None = None) -> Resolved:
     """``part`` in the mode ``given`` (defaults for the rest) as a checked SensorSpec."""
-    mode = select_mode(part, dict(given or {}))
+    chain_given, choice = split_error_keys(part, dict(given or {}))
+    mode = select_mode(part, chain_given)
     entries = _entries(part, mode)
     numbers: dict[str, object] = {}
     sources: list[FieldSource] = []
@@ -183,11 +199,20 @@ def resolve(part: PartSpec, given: Mapping[str, str] | None = None) -> Resolved:
         at = next(i for i, s in enumerate(sources) if s.field == "digital_order")
         sources[at] = replace(cutoff, field="digital_order", note="no digital stage in this mode")
     cited = "; ".join(dict.fromkeys(s.source for s in sources if s.source not in NOT_DOCUMENTS))
-    return Resolved(part, mode, _sensor(part, mode, numbers, cited), tuple(sources))
+    terms = term_sources(part, mode, choice)
+    stages, tolerances = error_stages(terms, choice)
+    named = {**mode, **shown_keys(choice)}
+    sensor = _sensor(part, named, numbers, cited, stages, tolerances)
+    return Resolved(part, mode, sensor, tuple(sources), choice, terms)
 
 
 def _sensor(
-    part: PartSpec, mode: dict[str, str], numbers: dict[str, object], cited: str
+    part: PartSpec,
+    mode: dict[str, str],
+    numbers: dict[str, object],
+    cited: str,
+    stages: tuple[StageUse, ...] = (),
+    tolerances: dict[str, Tolerance] | None = None,
 ) -> SensorSpec:
     per_axis: dict[str, dict[str, float]] = {}
     fields = dict(numbers)
@@ -211,6 +236,8 @@ def _sensor(
             plugin=part.plugin,
             distribution=part.distribution,
             per_axis=per_axis or None,
+            stages=stages,
+            tolerances=tolerances or {},
             **fields,  # type: ignore[arg-type]
         )
     except ValidationError as exc:

@@ -47,12 +47,31 @@ def has_tolerances(sensor: SensorSpec) -> bool:
     return bool(sensor.tolerances) or any(use.tolerances for use in sensor.stages)
 
 
+def _draw_axes(
+    tolerance: Tolerance, use: StageUse | None, param: str, nominal: float, *where: object
+) -> dict[str, dict[str, float]]:
+    """A stage parameter's own draws on the Y and Z axes its tolerance lists (``per_axis``)."""
+    values: dict[str, dict[str, float]] = {}
+    for axis in sorted(tolerance.per_axis or {}):
+        own = ((use.per_axis or {}) if use is not None else {}).get(axis, {})  # type: ignore[call-overload]
+        value = draw(tolerance.on_axis(axis), float(own.get(param, nominal)), *where, axis)
+        values.setdefault(axis, {})[param] = value
+    return values
+
+
+def _merge(into: dict[str, dict[str, float]], more: dict[str, dict[str, float]]) -> None:
+    for axis, values in more.items():
+        into.setdefault(axis, {}).update(values)
+
+
 def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
     """Unit ``k`` of ``sensor``: every toleranced value drawn, tolerances dropped.
 
     A tolerance ``"stage.parameter"`` applies to the listed stage of that
     name, or adds the stage (nominal value 0) to the unit when the profile
-    does not list it: a profile's nominal chain stays as it is.
+    does not list it: a profile's nominal chain stays as it is. A tolerance
+    with ``per_axis`` spreads draws the Y and Z values of the parameter on
+    their own streams (the stage's ``per_axis``).
 
     A sensor without tolerances is returned as it is (every unit is nominal).
     A drawn value the model refuses (a negative noise density) is a one-line
@@ -63,27 +82,40 @@ def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
     base = base_name(sensor.name)
     update: dict[str, Any] = {"tolerances": {}}
     added: dict[str, dict[str, float]] = {}
+    added_axes: dict[str, dict[str, dict[str, float]]] = {}
     for key in sorted(sensor.tolerances):
         stage, _, param = key.partition(".")
+        tolerance = sensor.tolerances[key]
         if param:  # a stage's parameter: on the listed stage, or on one added to the unit
             listed = [use for use in sensor.stages if use.name == stage]
-            nominal = float(listed[0].params.get(param, 0.0)) if listed else 0.0
-            value = draw(sensor.tolerances[key], nominal, seed, "unit", base, k, key)
-            added.setdefault(stage, {})[param] = value
+            use = listed[0] if listed else None
+            nominal = float(use.params.get(param, 0.0)) if use is not None else 0.0
+            where = (seed, "unit", base, k, key)
+            added.setdefault(stage, {})[param] = draw(tolerance, nominal, *where)
+            _merge(
+                added_axes.setdefault(stage, {}), _draw_axes(tolerance, use, param, nominal, *where)
+            )
             continue
         nominal = float(getattr(sensor, key))
-        update[key] = draw(sensor.tolerances[key], nominal, seed, "unit", base, k, key)
+        update[key] = draw(tolerance, nominal, seed, "unit", base, k, key)
     stages = []
     for i, use in enumerate(sensor.stages):
         params = dict(use.params)
+        axes = {axis: dict(values) for axis, values in (use.per_axis or {}).items()}
         for key in sorted(use.tolerances):
-            where = f"{use.name}.{i}.{key}"
-            params[key] = draw(
-                use.tolerances[key], float(params[key]), seed, "unit", base, k, where
-            )
+            where = (seed, "unit", base, k, f"{use.name}.{i}.{key}")
+            nominal = float(params[key])
+            params[key] = draw(use.tolerances[key], nominal, *where)
+            _merge(axes, _draw_axes(use.tolerances[key], use, key, nominal, *where))
         params.update(added.pop(use.name, {}))
-        stages.append(use.model_copy(update={"params": params, "tolerances": {}}))
-    stages += [StageUse(name=name, params=params) for name, params in sorted(added.items())]
+        _merge(axes, added_axes.pop(use.name, {}))
+        stages.append(
+            use.model_copy(update={"params": params, "tolerances": {}, "per_axis": axes or None})
+        )
+    stages += [
+        StageUse(name=name, params=params, per_axis=added_axes.get(name) or None)
+        for name, params in sorted(added.items())
+    ]
     update["stages"] = tuple(stages)
     data = {**sensor.model_dump(), **update}
     try:
@@ -97,9 +129,9 @@ def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
     if any(use.spec is None for use in unit.stages):
         return unit  # bound (and checked) when its chain is compiled
     for use in unit.stages:
-        if use.spec is not None:
+        for axis in ("x", *sorted(use.per_axis or {})):
             try:
-                use.spec.params.model_validate(use.params)
+                use.spec.params.model_validate(use.for_axis(axis).params)
             except ValidationError as exc:
                 raise SDTError(
                     f"sensor {sensor.name!r}, unit {k}, stage {use.name!r}: a drawn value is "
