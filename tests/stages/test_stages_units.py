@@ -56,6 +56,26 @@ def test_tolerances_leave_the_nominal_profile_and_its_hash_alone():
     assert draw_unit(plain, 4, 0) is plain
 
 
+def test_per_axis_spreads_draw_each_axis_on_its_own():
+    """A tolerance with per_axis: Z gets its own spread and stream; Y, not listed, shares X."""
+    sensor = SensorSpec.model_validate(
+        {
+            **ADXL345.model_dump(),
+            "name": "axes-test",
+            "tolerances": {"offset.tempco_mg_per_c": {"spread": 1.0, "per_axis": {"z": 3.0}}},
+        }
+    )
+    units = [draw_unit(sensor, 4, k) for k in range(3000)]
+    x, y, z = (
+        np.array([u.for_axis(a).stages[0].params["tempco_mg_per_c"] for u in units]) for a in "xyz"
+    )
+    factor = np.sqrt(1 - 6 * norm.pdf(3) / (2 * norm.cdf(3) - 1))  # truncated at +-3 SD
+    assert x.std() == pytest.approx(factor, rel=0.05)
+    assert z.std() == pytest.approx(3 * factor, rel=0.05)
+    assert np.array_equal(x, y)
+    assert abs(np.corrcoef(x, z)[0, 1]) < 4 / np.sqrt(3000)  # independent draws
+
+
 def test_benchmark_with_units_labels_runs_and_spreads_only_toleranced_sensors(tmp_path):
     config = BenchmarkConfig(
         dataset_options={"duration": 1.5},
