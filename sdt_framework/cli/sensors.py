@@ -115,11 +115,16 @@ def show_sensor(
 ) -> None:
     """Show every field of a sensor profile, or a part in a mode with each value's source.
 
+    A part's datasheet error terms are listed too; errors=datasheet,
+    cross_axis=datasheet and temp=85c in the mode turn them on.
+
     Example:
 
       sdt sensors show adxl345
 
       sdt sensors show "adxl355\\[range=8g,odr=1000]"
+
+      sdt sensors show "adxl355\\[errors=datasheet,temp=85c]"
     """
     from ..parts import resolve, split_name
 
