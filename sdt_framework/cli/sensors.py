@@ -181,7 +181,7 @@ def _print_part(resolved) -> None:
         _say(note)
     title, rows, notes = views.error_rows(resolved)
     if rows:
-        table(title, ["term", "figure", "per unit → stage", "", "doc", "where"], rows)
+        table(title, ["term", "figure", "per unit → stage", "state", "doc", "where"], rows)
         for note in notes:
             _say(note)
     table(
