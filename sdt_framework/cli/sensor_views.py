@@ -44,9 +44,10 @@ def parse_price(text: str) -> tuple[float, str | None]:
 
 
 def sensor_json(spec: SensorSpec) -> dict[str, Any]:
-    """A sensor profile as JSON: every field, provenance, derived step and hash."""
+    """A sensor profile as JSON: every field, tolerances, provenance, derived step and hash."""
     return {
         **spec.content_dict(),
+        "tolerances": {k: t.model_dump(exclude_none=True) for k, t in spec.tolerances.items()},
         "kind": "sensor",
         "plugin": spec.plugin,
         "distribution": spec.distribution,
@@ -57,6 +58,28 @@ def sensor_json(spec: SensorSpec) -> dict[str, Any]:
 
 def _fmt(value: float) -> str:
     return f"{value:g}"
+
+
+def _tolerance_text(tolerance: Any) -> str:
+    spread = f"{tolerance.spread_pct:g} %" if tolerance.spread is None else f"{tolerance.spread:g}"
+    what = "SD" if tolerance.distribution == "normal" else "+-"
+    return f"{tolerance.distribution} {what} {spread}"
+
+
+def profile_cell(spec: SensorSpec, field: str, data: dict[str, Any]) -> Any:
+    """The value of ``field`` as `sensors show` prints it: stages and tolerances readable."""
+    if field == "stages":
+        uses = []
+        for use in spec.stages:
+            params = ", ".join(f"{k}={v}" for k, v in use.params.items())
+            extra = [f"{a}: {v}" for a, v in (use.per_axis or {}).items()]
+            extra += [f"{k} {_tolerance_text(t)}" for k, t in use.tolerances.items()]
+            uses.append(f"{use.name}({params})" + (f" [{'; '.join(extra)}]" if extra else ""))
+        return "; ".join(uses) or None
+    if field == "tolerances":
+        items = spec.tolerances.items()
+        return "; ".join(f"{k}: {_tolerance_text(t)}" for k, t in items) or None
+    return data.get(field)
 
 
 def _span(values: list[float], unit: str = "") -> str:

@@ -152,7 +152,7 @@ def show_sensor(
         return
     data = views.sensor_json(spec)
     rows = [
-        [field, data.get(field), info.description or ""]
+        [field, views.profile_cell(spec, field, data), info.description or ""]
         for field, info in SensorSpec.model_fields.items()
     ]
     step = spec.quantisation_step_g

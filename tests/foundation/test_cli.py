@@ -83,6 +83,22 @@ def test_sensors_show_table():
     assert "noise_density_ug_rthz" in result.stdout and "0.00390625" not in result.stdout
 
 
+def test_sensors_show_prints_tolerances_and_stages_readably(tmp_path):
+    """adxl345's Rev. G tolerances are shown (they are not hashed, so not in content_dict)."""
+    result = runner.invoke(app, ["sensors", "show", "adxl345", "--json"])
+    data = json.loads(result.stdout)
+    assert data["tolerances"]["scale.error_pct"] == {"distribution": "uniform", "spread": 10.2}
+    profile = tmp_path / "gm.toml"
+    profile.write_text(
+        'name = "gm"\nsampling_rate_hz = 3200\nfull_scale_g = 16\nadc_bits = 13\n'
+        "noise_density_ug_rthz = 290\nmech_cutoff_hz = 5500\nanalog_cutoff_hz = 1600\n"
+        'stages = [{name = "gauss-markov", params = {sigma_ug = 200, tau_s = 2}}]\n'
+    )
+    args = ["--sensor-file", str(profile), "sensors", "show", "gm"]
+    result = runner.invoke(app, args, env={"COLUMNS": "250"})
+    assert "gauss-markov(sigma_ug=200.0, tau_s=2.0)" in result.stdout
+
+
 def test_unknown_sensor_is_one_line_without_traceback():
     result = sdt("sensors", "show", "adxl35")
     assert result.returncode == 2
