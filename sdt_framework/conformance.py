@@ -72,6 +72,37 @@ def _check_part(spec: PartSpec) -> None:
             if not (source.source and source.where) and not source.absent:
                 _fail(spec, f"{resolved.sensor.name}: {source.field} has no provenance")
     _check_sensor(resolve(spec).sensor)
+    _check_error_terms(spec)
+
+
+def _check_error_terms(spec: PartSpec) -> None:
+    """With its error terms on, every mode that has some draws a unit that compiles.
+
+    A mode without terms is an :class:`ErrorTermsError` by design and is
+    passed over; a part with terms must have at least one mode that runs.
+    """
+    from .api import default_registry
+    from .chain import compile_chain
+    from .parts.error_modes import ErrorTermsError
+    from .stages import draw_unit
+
+    if all(term.absent and term.stand_in == "none" for term in spec.errors.values()):
+        return  # the documents give no term: nothing to turn on
+    ran = 0
+    for mode in all_modes(spec):
+        for key in ("errors", "cross_axis"):
+            try:
+                sensor = resolve(spec, {**mode, key: "datasheet"}).sensor
+            except ErrorTermsError:
+                continue  # this mode (or this key) has no terms
+            try:
+                unit = draw_unit(default_registry().bind(sensor), seed=0, k=0)
+                compile_chain(unit, max(20000.0, float(unit.sampling_rate_hz)))
+            except SDTError as exc:
+                raise ConformanceError(f"{exc} (plugin {spec.plugin!r})") from None
+            ran += 1
+    if not ran:
+        _fail(spec, "has error terms, but no mode turns any of them on")
 
 
 def _check_feature_set(spec: FeatureSetSpec) -> None:

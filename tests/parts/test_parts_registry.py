@@ -6,8 +6,9 @@ import types
 
 import pytest
 
+import sdt_framework.api
 from sdt_framework import SensorSpec, build_registry, hookimpl
-from sdt_framework.conformance import check_plugin
+from sdt_framework.conformance import ConformanceError, check_plugin, check_spec
 from sdt_framework.errors import DuplicateNameError, SDTError, UnknownNameError
 
 
@@ -77,3 +78,13 @@ def test_the_catalogue_passes_the_conformance_checks():
     catalogue = pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog")
     specs = check_plugin(catalogue)
     assert len(specs) >= 12
+
+
+def test_conformance_turns_error_terms_on_and_needs_their_stages(monkeypatch):
+    """A part whose error terms need stages nobody installed fails the check, naming the stage."""
+    part = build_registry().part("adxl355")
+    check_spec(part)  # with the built-in stages: passes
+    blocked = build_registry(environ={"SDT_BLOCK_PLUGINS": "stages-errors"})
+    monkeypatch.setattr(sdt_framework.api, "default_registry", lambda: blocked)
+    with pytest.raises(ConformanceError, match="unknown stage 'offset'"):
+        check_spec(part)
