@@ -24,7 +24,7 @@ from .errors import DuplicateNameError, PluginLoadError, validation_summary
 from .parts import PartSpec
 from .registry_lookup import RegistryLookup
 from .sensor_files import load_sensor_file, sensor_files_from_env
-from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
+from .specs import POINT_SUFFIX, ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
 from .stages.spec import StageSpec
 
 __all__ = ["HOOKS", "Registry", "build_registry"]
@@ -124,7 +124,8 @@ class Registry(RegistryLookup):
                 return f"invalid {kind.kind} {name!r}: {validation_summary(exc)}"
         if not isinstance(spec, kind):
             return f"registered {type(spec).__name__}, expected {kind.__name__}"
-        if "[" in spec.name:
+        # a sweep point keeps its base part's mode: 'adxl355[range=8g]~rate=2000'
+        if "[" in spec.name and not POINT_SUFFIX.search(spec.name):
             return f"{spec.name!r}: brackets are reserved for part modes"
         staged.append(
             spec.model_copy(update={"plugin": info.name, "distribution": info.distribution})

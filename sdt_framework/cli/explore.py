@@ -31,7 +31,7 @@ def _print_min_spec(min_spec: Any) -> None:
         for (machine, scenario), values in zip(wide.index, wide.to_numpy(), strict=True)
     ]
     bases = best.drop_duplicates("parameter").set_index("parameter")["base_level"]
-    columns = [f"{p} (base {bases[p]:g})" for p in wide.columns]
+    columns = [f"{p} (base {'absent' if bases[p] != bases[p] else f'{bases[p]:g}'})" for p in wide]
     title = f"Minimum specification: {best['target'].iloc[0]} (best classifier)"
     table(title, ["machine", "scenario", *columns], rows)
 

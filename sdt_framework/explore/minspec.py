@@ -1,7 +1,8 @@
 """Minimum specification: the least demanding value of each parameter that still diagnoses.
 
-For a target (an absolute Macro-F1, a fraction of the reference's, or a
-largest loss to the reference) and each machine, scenario and classifier:
+For a target (an absolute Macro-F1, a fraction of the reference's, a largest
+loss to the reference, or a largest loss to the base sensor: how much an
+error term may cost) and each machine, scenario and classifier:
 
 - per parameter, one at a time with every other swept parameter at the base
   sensor's value: the least demanding level L such that L and every more
@@ -11,7 +12,13 @@ largest loss to the reference) and each machine, scenario and classifier:
 
 "Demanding" is the direction in which a part is harder to make
 (:data:`~sdt_framework.explore.sweep.DEMAND`, overridable in the cost model).
-A point meets the target when its mean Macro-F1 over repetitions does.
+Where lower is harder (noise density, every error-term magnitude of a stage),
+levels are ranked by their magnitude ``|value|`` and the answer is the largest
+tolerable magnitude: a level meets only if every level of that magnitude
+(``-x`` and ``+x``) and of every smaller one does. A parameter with no
+demanding direction (``"neither"``, e.g. a correlation time) gets no level,
+and a note saying why. A point meets the target when its mean Macro-F1 over
+repetitions does.
 """
 
 from __future__ import annotations
@@ -32,21 +39,37 @@ def thresholds(results: pd.DataFrame, target: Target) -> pd.Series:
     cells = results.groupby(CELL, sort=True)["macro_f1"].size().index
     if target.macro_f1 is not None:
         return pd.Series(target.macro_f1, index=cells, name="threshold")
-    reference = results[results["role"] == "reference"].groupby(CELL, sort=True)["macro_f1"].mean()
+    role = "base" if target.max_loss_to_base is not None else "reference"
+    reference = results[results["role"] == role].groupby(CELL, sort=True)["macro_f1"].mean()
     reference = reference.reindex(cells)
+    if target.max_loss_to_base is not None:
+        return (reference - target.max_loss_to_base).rename("threshold")
     if target.fraction_of_reference is not None:
         return (reference * target.fraction_of_reference).rename("threshold")
     return (reference - target.max_loss).rename("threshold")
 
 
 def _least_demanding(levels: np.ndarray, meets: np.ndarray, higher_is_harder: bool) -> float:
-    order = np.argsort(levels)
     if not higher_is_harder:
-        order = order[::-1]
-    levels, meets = levels[order], meets[order]  # least demanding first
-    # all more demanding levels meet: suffix-and of ``meets``
-    robust = np.flip(np.logical_and.accumulate(np.flip(meets)))
-    return float(levels[np.argmax(robust)]) if robust.any() else float("nan")
+        levels = np.abs(levels)  # an error's magnitude: -x and +x are one specification
+    unique, group = np.unique(levels, return_inverse=True)
+    # a magnitude meets when every level of it does
+    group_meets = np.bincount(group, weights=(~meets).astype(float), minlength=len(unique)) == 0
+    if not higher_is_harder:
+        unique, group_meets = unique[::-1], group_meets[::-1]  # least demanding first
+    # all more demanding levels meet: suffix-and of ``group_meets``
+    robust = np.flip(np.logical_and.accumulate(np.flip(group_meets)))
+    return float(unique[np.argmax(robust)]) if robust.any() else float("nan")
+
+
+def _no_line(others: Sequence[str], base_values: Mapping[str, float]) -> str:
+    absent = [f for f in others if np.isnan(float(base_values[f]))]
+    if absent:
+        return (
+            f"the base has no value of {', '.join(absent)} (a stage it does not list): "
+            f"list the stage in the base profile at one of the levels"
+        )
+    return "no evaluated point has the other parameters at the base"
 
 
 def min_spec(
@@ -68,14 +91,21 @@ def min_spec(
             for other in others:
                 at_base &= np.isclose(part[other].to_numpy(float), float(base_values[other]))
             line = part[at_base]
-            note = "" if len(line) else "no evaluated point has the other parameters at the base"
-            level = _least_demanding(
-                line[field].to_numpy(float),
-                line["macro_f1"].to_numpy() >= threshold,
-                demand[field] == "higher",
-            )
-            if len(line) and np.isnan(level):
-                note = "no level meets the target"
+            note = "" if len(line) else _no_line(others, base_values)
+            if demand[field] == "neither":
+                level = float("nan")
+                note = (
+                    "no demanding direction (not an error magnitude): give its demand in "
+                    "[sweep.cost] for a minimum level"
+                )
+            else:
+                level = _least_demanding(
+                    line[field].to_numpy(float),
+                    line["macro_f1"].to_numpy() >= threshold,
+                    demand[field] == "higher",
+                )
+                if len(line) and np.isnan(level):
+                    note = "no level meets the target"
             rows.append(
                 {
                     **dict(zip(CELL, cell, strict=True)),

@@ -27,10 +27,9 @@ from ..bench.results import write_frame
 from ..io import atomic_write_text
 from .effects import main_effects, point_means, with_best
 from .minspec import meeting_points, min_spec
-from .pareto import point_costs, with_front
+from .pareto import demands, point_costs, with_front
 from .run import ExplorePlan
 from .sensitivity import sensitivity
-from .sweep import DEMAND
 
 __all__ = ["EXPLORE_FILES", "write_explore"]
 
@@ -49,13 +48,13 @@ def write_explore(
     out = Path(out_dir)
     sweep = explore.sweep
     fields = list(sweep.axes)
-    base_values = {f: float(getattr(explore.base, f)) for f in fields}
-    demand = {f: (sweep.cost[f].demand if f in sweep.cost else None) or DEMAND[f] for f in fields}
+    base_values = explore.base_values()
+    demand = demands(sweep, explore.stage_axes)
     analysed = with_best(table)
     points = pd.DataFrame(
         [{"point": p.spec.name, "design_index": p.index, **p.values} for p in explore.points]
     )
-    points["cost"] = point_costs(points, base_values, sweep, _base_cost(explore))
+    points["cost"] = point_costs(points, base_values, sweep, _base_cost(explore), demand)
     means = point_means(analysed[analysed["role"] == "point"], fields)
     pareto = with_front(means.merge(points[["point", "cost"]], on="point"))
     tables = {

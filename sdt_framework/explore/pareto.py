@@ -7,12 +7,17 @@ Cost model (override per parameter in the sweep's ``[sweep.cost]`` table)::
 where ``steps_p`` counts how far the point's value moves from the base in the
 parameter's demanding direction: ``log2(value / base)`` for a log-scale term
 (one step = a doubling), ``value - base`` for a linear one, with the sign
-flipped for parameters where lower is more demanding (noise density). Moving
-towards an easier specification lowers the cost. ``base_cost`` is the sweep's
-``base_cost``, else the base part's unit price when it has one, else 0.
-Defaults: weight 1 per doubling for every swept parameter, and 1 per bit or
-per filter order for the integer ones. The numbers are relative effort, not
-money, unless the user writes prices into the terms.
+flipped for parameters where lower is more demanding (noise density, error
+terms; these count by magnitude ``|value|``). Moving towards an easier
+specification lowers the cost. ``base_cost`` is the sweep's ``base_cost``,
+else the base part's unit price when it has one, else 0. Defaults: weight 1
+per doubling for every swept parameter, and 1 per bit or per filter order for
+the integer ones. A stage parameter's default is 1 per halving of its
+magnitude when its levels and base value are non-zero; else (an error term
+swept from 0, or absent from the base, which counts as 0) it is linear, 1
+cost unit across the tested span: weight 1 / (largest tested ``|level|``). A
+parameter with no demanding direction (``"neither"``) costs nothing. The numbers are
+relative effort, not money, unless the user writes prices into the terms.
 """
 
 from __future__ import annotations
@@ -22,31 +27,58 @@ from collections.abc import Mapping
 import numpy as np
 import pandas as pd
 
+from .design import axis_levels
 from .effects import CELL
+from .stage_axes import StageAxis, finite_or_zero, is_stage_key, magnitude, stage_demand
 from .sweep import DEMAND, INTEGER_FIELDS, CostTerm, Sweep
 
-__all__ = ["cost_terms", "pareto_front", "point_costs", "with_front"]
+__all__ = ["cost_terms", "demands", "pareto_front", "point_costs", "with_front"]
 
 
-def cost_terms(sweep: Sweep) -> dict[str, CostTerm]:
+def demands(sweep: Sweep, stage_axes: Mapping[str, StageAxis] | None = None) -> dict[str, str]:
+    """Demanding direction of every swept parameter: the sweep's override, else the default."""
+    out = {}
+    for field in sweep.axes:
+        term = sweep.cost.get(field)
+        axis = (stage_axes or {}).get(field)
+        default = DEMAND.get(field) or (axis.demand if axis else stage_demand(field))
+        out[field] = (term.demand if term else None) or default
+    return out
+
+
+def cost_terms(sweep: Sweep, base_values: Mapping[str, float] | None = None) -> dict[str, CostTerm]:
     """The cost term of every swept parameter (the sweep's, or the default)."""
     terms = {}
     for field in sweep.axes:
         default = CostTerm(scale="linear" if field in INTEGER_FIELDS else "log")
+        if is_stage_key(field):
+            base = abs(finite_or_zero(float((base_values or {}).get(field, 0.0))))
+            magnitudes = [abs(v) for v in axis_levels(sweep.axes[field])]
+            if not (base > 0 and min(magnitudes) > 0):  # 0 to the largest level: 1 unit
+                default = CostTerm(scale="linear", weight=1.0 / (max(magnitudes) or 1.0))
         terms[field] = sweep.cost.get(field, default)
     return terms
 
 
 def point_costs(
-    values: pd.DataFrame, base_values: Mapping[str, float], sweep: Sweep, base_cost: float
+    values: pd.DataFrame,
+    base_values: Mapping[str, float],
+    sweep: Sweep,
+    base_cost: float,
+    demand: Mapping[str, str] | None = None,
 ) -> np.ndarray:
     """Cost of each row of ``values`` (one column per swept parameter)."""
+    demand = demand or demands(sweep)
     total = np.full(len(values), float(base_cost))
-    for field, term in cost_terms(sweep).items():
-        value = values[field].to_numpy(float)
+    for field, term in cost_terms(sweep, base_values).items():
+        direction = demand[field]
+        if direction == "neither":
+            continue
         base = float(base_values[field])
+        base = finite_or_zero(base) if is_stage_key(field) else base
+        value = magnitude(values[field].to_numpy(float), direction)
+        base = float(magnitude(np.asarray(base), direction))
         steps = np.log2(value / base) if term.scale == "log" else value - base
-        direction = term.demand or DEMAND[field]
         total += term.weight * (steps if direction == "higher" else -steps)
     return total
 

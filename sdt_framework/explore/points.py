@@ -3,17 +3,22 @@
 Each point goes through :class:`~sdt_framework.specs.SensorSpec` validation, so
 a combination the chain cannot run (a digital cutoff at or above the new
 Nyquist, say) is not evaluated: it is returned with the reason, to be written
-to ``skipped_points.csv``, and the sweep goes on.
+to ``skipped_points.csv``, and the sweep goes on. Stage-parameter values
+(``"nonlinearity.second_pct_fs"``) go into the profile's stage list and are
+checked by the stage's own parameter model the same way.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import pandas as pd
 from pydantic import ValidationError
 
 from ..specs import SensorSpec
+from .stage_axes import StageAxis, require
+from .stage_values import with_stage_values
 from .sweep import INTEGER_FIELDS, SHORT_NAMES, Sweep
 from .ties import evaluate_tie
 
@@ -33,9 +38,21 @@ def _fmt(value: float, digits: int) -> str:
     return f"{value:.{digits}g}"
 
 
+def short_name(key: str) -> str:
+    """A swept key's name in point names: the field's short name, or the stage key itself.
+
+    Sensor names are lower case, so a stage parameter spelt with capitals is
+    lower-cased here (only in the name).
+    """
+    return SHORT_NAMES.get(key, key.lower())
+
+
 def point_name(base: str, values: dict[str, float], digits: int = 4) -> str:
-    """Readable name of a point, e.g. ``adxl345~rate=1600,nsd=90``."""
-    settings = ",".join(f"{SHORT_NAMES[k]}={_fmt(v, digits)}" for k, v in values.items())
+    """Readable name of a point, e.g. ``adxl345~rate=1600,nsd=90``.
+
+    A stage parameter appears under its key: ``adxl345~nonlinearity.second_pct_fs=0.5``.
+    """
+    settings = ",".join(f"{short_name(k)}={_fmt(v, digits)}" for k, v in values.items())
     return f"{base.split('~')[0]}~{settings}"
 
 
@@ -51,22 +68,29 @@ def _resolved(sweep: Sweep, base: SensorSpec, row: dict[str, float]) -> dict[str
     values = {k: (int(v) if k in INTEGER_FIELDS else float(v)) for k, v in row.items()}
     scope = {**base.model_dump(include=set(SHORT_NAMES)), **values}
     scope = {k: v for k, v in scope.items() if v is not None}
+    scope = {k: v for k, v in scope.items() if k in SHORT_NAMES}  # ties read fields only
     named = {**scope, **{SHORT_NAMES[k]: v for k, v in scope.items()}}
     for field, expression in sweep.ties.items():
         tied = evaluate_tie(expression, named)
         values[field] = round(tied) if field in INTEGER_FIELDS else tied
-        named[field] = named[SHORT_NAMES[field]] = values[field]
+        if field in SHORT_NAMES:  # a tied stage parameter is set, never read by another tie
+            named[field] = named[SHORT_NAMES[field]] = values[field]
     return values
 
 
 def build_points(
-    sweep: Sweep, base: SensorSpec, design: pd.DataFrame
+    sweep: Sweep,
+    base: SensorSpec,
+    design: pd.DataFrame,
+    stage_axes: Mapping[str, StageAxis] | None = None,
 ) -> tuple[list[Point], pd.DataFrame]:
     """Validated points, and a table of the skipped ones with their reasons.
 
     Names carry the swept values with 4 significant digits, more where two
-    points would otherwise share a name.
+    points would otherwise share a name. A sweep over stage parameters needs
+    ``stage_axes``, from :func:`~sdt_framework.explore.stage_axes.check_stage_axes`.
     """
+    stage_axes = require(sweep, stage_axes)
     fields = list(sweep.axes)
     rows = design[fields].to_dict("records")
     digits = 4
@@ -79,19 +103,20 @@ def build_points(
         name = point_name(base.name, row, digits)
         try:
             values = _resolved(sweep, base, row)
+            stages = with_stage_values(content["stages"], values, stage_axes)
             spec = SensorSpec.model_validate(
                 {
                     **content,
-                    **values,
+                    **{k: v for k, v in values.items() if k not in stage_axes},
+                    "stages": stages,
                     "name": name,
                     "description": f"{base.name} with {', '.join(name.split('~')[1:])}",
                     "source": f"design point {int(index)} of a sweep on {base.name}",
                 }
             )
-        except ValidationError as exc:
-            skipped.append(
-                {"design_index": int(index), "point": name, **row, "reason": _reason(exc)}
-            )
+        except (ValidationError, ValueError) as exc:
+            reason = _reason(exc) if isinstance(exc, ValidationError) else str(exc)
+            skipped.append({"design_index": int(index), "point": name, **row, "reason": reason})
             continue
         points.append(Point(int(index), values, spec))
     columns = ["design_index", "point", *fields, "reason"]

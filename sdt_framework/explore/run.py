@@ -12,7 +12,7 @@ sensor reproduces that sensor's benchmark numbers exactly.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import pandas as pd
@@ -26,6 +26,7 @@ from ..sensor_files import load_sensor_file
 from ..specs import SensorSpec
 from .design import design_points, unit_column
 from .points import Point, build_points
+from .stage_axes import StageAxis, base_value, check_stage_axes
 from .sweep import Sweep
 
 __all__ = ["ExplorePlan", "explore_table", "plan_explore"]
@@ -41,6 +42,12 @@ class ExplorePlan:
     points: list[Point]
     skipped: pd.DataFrame
     plan: Plan
+    #: the sweep's stage-parameter keys, checked against the registry
+    stage_axes: dict[str, StageAxis] = field(default_factory=dict)
+
+    def base_values(self) -> dict[str, float]:
+        """The base's value of every swept parameter (NaN: a stage it lacks, no default)."""
+        return {key: base_value(self.base, key, self.stage_axes) for key in self.sweep.axes}
 
 
 def resolve_base(name: str, registry: Registry) -> SensorSpec:
@@ -74,8 +81,9 @@ def plan_explore(
             f"remove it"
         )
     base = resolve_base(sweep.base, registry)
+    stage_axes = check_stage_axes(sweep, base, registry, where)
     design = design_points(sweep)
-    points, skipped = build_points(sweep, base, design)
+    points, skipped = build_points(sweep, base, design, stage_axes)
     if not points:
         raise SDTError(
             f"{where}: none of the {len(design)} design points is a valid sensor; "
@@ -91,7 +99,7 @@ def plan_explore(
     if plan.reference not in names:  # the reference follows the data: known once planned
         names = [plan.reference, *names]
         plan = plan_benchmark(_config(data, names, where), registry)
-    return ExplorePlan(sweep, base, design, points, skipped, plan)
+    return ExplorePlan(sweep, base, design, points, skipped, plan, stage_axes)
 
 
 def _config(data: dict[str, Any], sensors: list[str], where: str) -> BenchmarkConfig:
@@ -120,7 +128,7 @@ def explore_table(explore: ExplorePlan, results: pd.DataFrame) -> pd.DataFrame:
                 **{f: point.values[f] for f in fields},
             }
         )
-    base_values = {f: getattr(explore.base, f) for f in fields}
+    base_values = explore.base_values()
     rows.append({"sensor": explore.base.name, "role": "base", "design_index": -1, **base_values})
     params = pd.DataFrame(rows).drop_duplicates("sensor")
     units = explore.design.set_index("design_index")[[unit_column(f) for f in fields]]

@@ -33,6 +33,7 @@ from pydantic import (
 )
 
 from ..errors import SDTError, SpecFileError
+from .stage_axes import flatten_stage_keys, is_stage_key
 from .ties import check_tie
 
 __all__ = [
@@ -113,8 +114,10 @@ class CostTerm(_Model):
 
     weight: float = Field(default=1.0, description="Cost units per step.")
     scale: Literal["linear", "log"] = Field(default="log", description="What one step is.")
-    demand: Literal["higher", "lower"] | None = Field(
-        default=None, description="Override which direction is more demanding."
+    demand: Literal["higher", "lower", "neither"] | None = Field(
+        default=None,
+        description="Override which direction is more demanding ('neither': not a "
+        "specification, no minimum level and no cost).",
     )
 
 
@@ -128,12 +131,20 @@ class Target(_Model):
     max_loss: float | None = Field(
         default=None, ge=0, lt=1, description="Largest Macro-F1 loss to the reference."
     )
+    max_loss_to_base: float | None = Field(
+        default=None,
+        ge=0,
+        lt=1,
+        description="Largest Macro-F1 loss to the base sensor (how much error it tolerates).",
+    )
 
     @model_validator(mode="after")
     def _exactly_one(self) -> Target:
-        given = [self.macro_f1, self.fraction_of_reference, self.max_loss]
+        given = [self.macro_f1, self.fraction_of_reference, self.max_loss, self.max_loss_to_base]
         if sum(v is not None for v in given) != 1:
-            raise ValueError("give exactly one of macro_f1, fraction_of_reference, max_loss")
+            raise ValueError(
+                "give exactly one of macro_f1, fraction_of_reference, max_loss, max_loss_to_base"
+            )
         return self
 
     def describe(self) -> str:
@@ -142,7 +153,9 @@ class Target(_Model):
             return f"Macro-F1 >= {self.macro_f1:g}"
         if self.fraction_of_reference is not None:
             return f">= {self.fraction_of_reference:g} x reference Macro-F1"
-        return f"loss to reference <= {self.max_loss:g}"
+        if self.max_loss is not None:
+            return f"loss to reference <= {self.max_loss:g}"
+        return f"loss to base <= {self.max_loss_to_base:g}"
 
 
 class Sweep(_Model):
@@ -155,29 +168,44 @@ class Sweep(_Model):
     )
     levels: int = Field(default=4, ge=2, description="morris: grid levels per parameter.")
     seed: int = Field(default=0, ge=0, description="Seed of the lhs/sobol/morris design.")
-    axes: dict[str, Axis] = Field(min_length=1, description="SensorSpec field -> Axis.")
-    ties: dict[str, str] = Field(default_factory=dict, description="field -> expression.")
+    axes: dict[str, Axis] = Field(
+        min_length=1, description="SensorSpec field or 'stage.parameter' -> Axis."
+    )
+    ties: dict[str, str] = Field(default_factory=dict, description="key -> expression.")
     cost: dict[str, CostTerm] = Field(default_factory=dict, description="field -> cost term.")
     base_cost: float | None = Field(
         default=None, description="Cost of the base point (default: its price, else 0)."
     )
     target: Target = Field(default_factory=lambda: Target(max_loss=0.05))
 
+    @model_validator(mode="before")
+    @classmethod
+    def _flatten(cls, data: Any) -> Any:
+        """TOML's unquoted ``stage.param = ...`` keys arrive as nested tables: flatten them."""
+        if not isinstance(data, dict):
+            return data
+        leaves = {"axes": dict, "cost": dict, "ties": str}
+        return {
+            k: flatten_stage_keys(v, SWEEPABLE, leaves[k]) if k in leaves else v
+            for k, v in data.items()
+        }
+
     @field_validator("axes", "cost")
     @classmethod
     def _sweepable(cls, value: dict[str, Any]) -> dict[str, Any]:
         for key in value:
-            if key not in SWEEPABLE:
+            if key not in SWEEPABLE and not is_stage_key(key):
                 raise ValueError(
-                    f"{key!r} is not a sweepable field; choose from {', '.join(SWEEPABLE)}"
+                    f"{key!r} is not a sweepable field; choose from {', '.join(SWEEPABLE)}, "
+                    f"or a stage parameter 'stage.param' (e.g. 'nonlinearity.second_pct_fs')"
                 )
         return value
 
     @model_validator(mode="after")
     def _check_names(self) -> Sweep:
         for key, expression in self.ties.items():
-            if key not in SWEEPABLE:
-                raise ValueError(f"tie {key!r} is not a sweepable field")
+            if key not in SWEEPABLE and not is_stage_key(key):
+                raise ValueError(f"tie {key!r} is not a sweepable field or stage parameter")
             if key in self.axes:
                 raise ValueError(f"{key!r} is both swept and tied; keep one")
             check_tie(key, expression, SHORT_NAMES)

@@ -4,7 +4,8 @@ Datasheets give filter corners as fractions of the output data rate, so a rate
 sweep keeps them valid only if they move with the rate. An expression may use
 numbers, the short names of SensorSpec fields (``rate``, ``nsd``, ``bits``, ...),
 parentheses and ``+ - * /``; nothing else is evaluated (no names from Python,
-no calls), so a sweep file cannot run code.
+no calls), so a sweep file cannot run code. A tie may set a stage parameter
+(``"gauss-markov.tau_s" = "2"``) but not read one: ``stage.param`` is not a name.
 """
 
 from __future__ import annotations
@@ -37,6 +38,11 @@ def _parse(field: str, expression: str) -> ast.expr:
 def _names(node: ast.expr, field: str, expression: str) -> set[str]:
     names: set[str] = set()
     for sub in ast.walk(node):
+        if isinstance(sub, ast.Attribute):
+            raise SDTError(
+                f"tie {field} = {expression!r}: a tie may use only SensorSpec fields (rate, "
+                f"nsd, ...), not stage parameters such as 'stage.param' (they are not names)"
+            )
         if isinstance(sub, ast.Name):
             names.add(sub.id)
         elif isinstance(sub, ast.Constant) and isinstance(sub.value, int | float):

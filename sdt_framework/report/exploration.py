@@ -63,8 +63,12 @@ def _fig_effects(effects: pd.DataFrame, out: Path) -> Path:
                 label=f"{machine} / {scenario}",
             )
         levels = np.sort(best.loc[best["parameter"] == param, "level"].unique())
+        positive = levels[levels > 0]
         if levels.min() > 0 and levels.max() / levels.min() >= 8:
             ax.set_xscale("log")
+            ax.minorticks_off()
+        elif levels.min() == 0 and len(positive) >= 2 and positive[-1] / positive[0] >= 8:
+            ax.set_xscale("symlog", linthresh=positive[0])  # an error term swept from 0
             ax.minorticks_off()
         if len(levels) <= 8:
             ax.set_xticks(levels, [f"{v:g}" for v in levels])
@@ -135,7 +139,7 @@ def _min_spec_table(min_spec: pd.DataFrame) -> Table:
             r.parameter,
             f"{r.threshold:.3f}",
             "none" if pd.isna(r.min_level) else f"{r.min_level:g}",
-            f"{r.base_level:g}",
+            "absent" if pd.isna(r.base_level) else f"{r.base_level:g}",
         )
         for r in best.itertuples()
     )

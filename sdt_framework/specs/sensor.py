@@ -13,7 +13,8 @@ from .base import _NAME, Spec
 __all__ = ["SensorSpec"]
 
 #: a design point's settings after its base name, e.g. ``adxl345~rate=1600,nsd=90``
-POINT_SUFFIX = re.compile(r"~[a-z0-9_]+=[a-z0-9.+-]+(,[a-z0-9_]+=[a-z0-9.+-]+)*$")
+#: (a stage parameter's key in full: ``adxl345~gauss-markov.sigma_ug=300``)
+POINT_SUFFIX = re.compile(r"~[a-z0-9_.-]+=[a-z0-9.+-]+(,[a-z0-9_.-]+=[a-z0-9.+-]+)*$")
 #: a part's operating mode after its name, e.g. ``adxl355[odr=4000,range=8g]``
 MODE_SUFFIX = re.compile(r"\[([a-z0-9_]+=[a-z0-9._+-]+)(,[a-z0-9_]+=[a-z0-9._+-]+)*\]$")
 
