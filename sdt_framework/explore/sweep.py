@@ -13,7 +13,10 @@ and an optional ``[benchmark]`` table holding the protocol, exactly as
     [sweep.ties]
     digital_cutoff_hz = "0.4999 * rate"
 
-Every error names the sweep file, the key and what to do, before any work.
+An axis may also be a chain-stage parameter, ``"nonlinearity.second_pct_fs"``
+(:mod:`~sdt_framework.explore.stage_axes`): spelt right here, checked against
+the registry's stages where the base sensor is resolved. Every error names the
+sweep file, the key and what to do, before any work.
 """
 
 from __future__ import annotations

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -365,3 +366,15 @@ def test_a_part_in_a_mode_at_85c_is_a_base_and_keeps_its_temperature(registry):
         scale = next(u for u in registry.sensor(point.spec.name).stages if u.name == "scale")
         assert scale.params["tempco_pct_per_c"] == level
         assert scale.params["temperature"]["celsius"] == 85.0
+
+
+@pytest.mark.parametrize("path", sorted(Path(__file__).parents[2].glob("examples/sweeps/*.toml")))
+def test_every_example_sweep_plans_its_points(path, registry):
+    sweep, _ = load_sweep(path)
+    if "[" in sweep.base:
+        pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog")
+    base = registry.sensor(sweep.base)
+    points, skipped = build_points(
+        sweep, base, design_points(sweep), check_stage_axes(sweep, base, registry, path)
+    )
+    assert points and skipped.empty
