@@ -11,12 +11,40 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
+import pandas as pd
+
 from .ranking import Ranking
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 __all__ = ["plot_cd_diagram"]
+
+#: width of the rank axis, and of one character of a 10 pt label (DejaVu Sans, generous), inches
+AXIS_INCHES = 5.0
+CHAR_INCHES = 0.08
+
+
+def _short_names(ranking: Ranking, title: str) -> tuple[pd.Series, pd.DataFrame, str]:
+    """Ranks and Nemenyi table with sweep points named by their settings alone.
+
+    Design points (``base~a=1,b=2``) of one base share a long prefix; it is
+    dropped from their labels (``~a=1,b=2``) and named once in the title, so
+    the diagram stays readable.
+    """
+    names = [str(name) for name in ranking.ranks.index]
+    bases = {name.split("~", 1)[0] for name in names if "~" in name}
+    if len(bases) != 1:
+        return ranking.ranks, ranking.nemenyi, title
+    (base,) = bases
+    rename = {name: name[len(base) :] for name in names if name.startswith(base + "~")}
+    note = f"points ~... of {base}"
+    title = f"{title}; {note}" if title else note
+    return (
+        ranking.ranks.rename(index=rename),
+        ranking.nemenyi.rename(index=rename, columns=rename),
+        title,
+    )
 
 
 def plot_cd_diagram(
@@ -36,14 +64,25 @@ def plot_cd_diagram(
     import scikit_posthocs as sp
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=(8.0, 1.6 + 0.32 * ranking.k), dpi=110)
+    ranks, nemenyi, title = _short_names(ranking, title)
+    # labels stand outside the axis, left and right: size the margins to the longest one
+    longest = max(len(f"{name} ({rank:.2f})") for name, rank in ranks.items())
+    margin = 0.3 + CHAR_INCHES * longest
+    width, height = AXIS_INCHES + 2 * margin, 1.6 + 0.32 * ranking.k
+    fig = Figure(figsize=(width, height), dpi=110)
+    fig.subplots_adjust(
+        left=margin / width, right=1 - margin / width, top=1 - 0.55 / height, bottom=0.05
+    )
     ax = fig.add_subplot()
     palette = None
     if colors:
-        palette = {name: colors.get(name, "#333333") for name in ranking.ranks.index}
+        palette = {
+            short: colors.get(name, "#333333")
+            for short, name in zip(ranks.index, ranking.ranks.index, strict=True)
+        }
     sp.critical_difference_diagram(
-        ranking.ranks,
-        ranking.nemenyi,
+        ranks,
+        nemenyi,
         alpha=ranking.alpha,
         ax=ax,
         color_palette=palette,
@@ -64,5 +103,4 @@ def plot_cd_diagram(
         f"Nemenyi CD = {ranking.cd:.2f} at α = {ranking.alpha:g}"
     )
     fig.suptitle(f"{title}\n{numbers}" if title else numbers, fontsize=9)
-    fig.tight_layout()
     return fig

@@ -108,3 +108,30 @@ def test_cd_diagram_is_drawn(scores, tmp_path):
     assert pixels.shape[1] > 600 and pixels.shape[0] > 200
     dark = (pixels[..., :3].mean(axis=2) < 0.5).mean()
     assert 0.005 < dark < 0.3  # lines and labels, not an empty canvas
+
+
+def test_cd_diagram_keeps_long_sweep_point_labels_inside_the_figure():
+    """Design-point names share their base: it is dropped from the labels, which all fit."""
+    rng = np.random.default_rng(3)
+    base = "adxl345-ds[errors=datasheet,odr=3200,range=16g,temp=85c]"
+    names = ["wilcoxon-786b10", base] + [
+        f"{base}~nonlinearity.second_pct_fs={v},gauss-markov.sigma_ug={w}"
+        for v in (0, 0.5, 32)
+        for w in (0, 1e4)
+    ]
+    table = pd.DataFrame(rng.uniform(0.3, 0.6, (12, len(names))), columns=names)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = plot_cd_diagram(friedman_nemenyi(table))
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    renderer = canvas.get_renderer()
+    box = fig.bbox
+    labels = [t for ax in fig.axes for t in ax.texts if "(" in t.get_text()]
+    assert len(labels) == len(names)
+    for text in labels:
+        extent = text.get_window_extent(renderer)
+        assert extent.x0 >= box.x0 and extent.x1 <= box.x1, text.get_text()
+    shown = " ".join(t.get_text() for t in labels)
+    assert "~nonlinearity.second_pct_fs=0.5" in shown and f"{base}~" not in shown
+    assert f"of {base}" in fig.texts[0].get_text()  # the base is named once, in the title
