@@ -8,38 +8,25 @@ that no line is wrapped.
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from sdt_framework.cli import common
-from sdt_framework.cli.main import main
 
 # "a[/]b.npy" is the file "]b.npy" in the folder "a[": a path a user can type
 NAMES = ["run[bold].npy", "a:x:b.npy", "x[red]:smile:.npy", "a[/]b.npy"]
 
 
 @pytest.fixture
-def sdt(monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture):
-    """Run ``sdt ARGS`` through ``main()``: (exit status, stdout, stderr)."""
+def sdt(monkeypatch: pytest.MonkeyPatch, sdt_main):
+    """``sdt_main`` with both consoles 400 columns wide, so no line wraps."""
     # the private attribute behind Console.width: undoing it restores "follow the
     # terminal" (None); undoing the property would pin the width for later tests
     monkeypatch.setattr(common.console, "_width", 400)
     monkeypatch.setattr(common.err_console, "_width", 400)
-
-    def run(*args: str) -> tuple[int, str, str]:
-        monkeypatch.setattr(sys, "argv", ["sdt", *args])
-        try:
-            main()
-            status = 0
-        except SystemExit as exc:
-            status = exc.code if isinstance(exc.code, int) else 1
-        out = capsys.readouterr()
-        return status, out.out, out.err
-
-    return run
+    return sdt_main
 
 
 @pytest.mark.parametrize("name", NAMES)

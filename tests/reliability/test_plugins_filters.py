@@ -3,12 +3,9 @@ and a name not found while a switch left plugins out says that the switch is act
 
 from __future__ import annotations
 
-import sys
-
 import pytest
 
 from sdt_framework import UnknownNameError, build_registry
-from sdt_framework.cli.main import main
 
 SENSOR_PLUGIN = """
 from sdt_framework import SensorSpec, hookimpl
@@ -18,17 +15,6 @@ def register_sensors(register):
     register(SensorSpec(name="extra", sampling_rate_hz=1000, full_scale_g=2, adc_bits=10,
                         noise_density_ug_rthz=100, mech_cutoff_hz=3000, analog_cutoff_hz=400))
 """
-
-
-def run_main(monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture, *args: str):
-    monkeypatch.setattr(sys, "argv", ["sdt", *args])
-    try:
-        main()
-        status = 0
-    except SystemExit as exc:
-        status = exc.code if isinstance(exc.code, int) else 1
-    out = capsys.readouterr()
-    return status, out.out, out.err
 
 
 def test_only_switch_naming_nothing_installed_warns():
@@ -81,9 +67,9 @@ def test_no_note_without_a_switch():
     assert "filter" not in str(info.value)
 
 
-def test_cli_prints_the_warning_and_the_filter_in_the_error(monkeypatch, capsys):
+def test_cli_prints_the_warning_and_the_filter_in_the_error(monkeypatch, sdt_main):
     monkeypatch.setenv("SDT_PLUGINS", "adxl357,adxl3455")
-    status, _, err = run_main(monkeypatch, capsys, "sensors", "show", "adxl345")
+    status, _, err = sdt_main("sensors", "show", "adxl345")
     assert status == 2
     warning, error = err.splitlines()
     assert warning.startswith("warning: SDT_PLUGINS='adxl357,adxl3455': no installed plugin")

@@ -2,12 +2,7 @@
 
 from __future__ import annotations
 
-import sys
-
-import pytest
-
 from sdt_framework import build_registry
-from sdt_framework.cli.main import main
 
 GOOD = dict(
     sampling_rate_hz=1000,
@@ -51,17 +46,6 @@ from sdt_framework import SensorSpec, hookimpl
 
 BAD = SensorSpec(**{{**{GOOD!r}, "full_scale_g": 0}}, name="zero")
 """
-
-
-def run_main(monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture, *args: str):
-    monkeypatch.setattr(sys, "argv", ["sdt", *args])
-    try:
-        main()
-        status = 0
-    except SystemExit as exc:
-        status = exc.code if isinstance(exc.code, int) else 1
-    out = capsys.readouterr()
-    return status, out.out, out.err
 
 
 def test_valid_specs_of_a_plugin_with_invalid_ones_are_registered(fake_dist):
@@ -108,9 +92,9 @@ def test_invalid_spec_at_import_is_one_line(fake_dist):
     )
 
 
-def test_cli_warns_one_line_each_and_uses_the_valid_specs(fake_dist, monkeypatch, capsys):
+def test_cli_warns_one_line_each_and_uses_the_valid_specs(fake_dist, monkeypatch, sdt_main):
     fake_dist("sdt-mixed", {"mixed": "mixed_mod"}, {"mixed_mod": MIXED})
-    status, out, err = run_main(monkeypatch, capsys, "sensors", "show", "good-two", "--json")
+    status, out, err = sdt_main("sensors", "show", "good-two", "--json")
     assert status == 0
     assert '"name": "good-two"' in out
     lines = err.splitlines()
