@@ -16,6 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from sdt_framework import build_registry
+
 FakeDist = Callable[..., Path]
 
 
@@ -42,3 +44,9 @@ def fake_dist(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[FakeD
     yield make
     for module in added:
         sys.modules.pop(module, None)
+
+
+@pytest.fixture(scope="session")
+def registry():
+    """The installed registry (built-in plugins), shared: a test that adds specs builds its own."""
+    return build_registry()

@@ -6,7 +6,6 @@ from typing import Any
 
 import pytest
 
-from sdt_framework import build_registry
 from sdt_framework.bench.config import BenchmarkConfig
 
 #: Motor-2 only (15 runs), 1.5 s acquisitions (2 windows per channel), 2 channels.
@@ -30,9 +29,3 @@ def small_config(tmp_path):
         return BenchmarkConfig(**{**SMALL, "cache_dir": str(tmp_path / "cache"), **changes})
 
     return make
-
-
-@pytest.fixture(scope="session")
-def registry():
-    """The installed registry (built-in plugins)."""
-    return build_registry()

@@ -4,14 +4,6 @@ from __future__ import annotations
 
 import pytest
 
-from sdt_framework import build_registry
-
-
-@pytest.fixture(scope="session")
-def registry():
-    """The installed registry (built-in plugins)."""
-    return build_registry()
-
 
 @pytest.fixture(scope="session")
 def paper8(registry):

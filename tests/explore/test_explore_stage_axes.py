@@ -36,11 +36,6 @@ TINY = {
 NONLINEARITY = {"base": "adxl345", "axes": {"nonlinearity.second_pct_fs": {"levels": [0, 2.5]}}}
 
 
-@pytest.fixture(scope="module")
-def registry():
-    return build_registry()
-
-
 def points_of(sweep: dict, base: SensorSpec, registry):
     parsed = parse_sweep(sweep)
     axes = check_stage_axes(parsed, base, registry)
@@ -360,10 +355,11 @@ def test_a_part_in_a_mode_at_85c_is_a_base_and_keeps_its_temperature(registry):
     sweep = {"base": base.name, "axes": {"scale.tempco_pct_per_c": {"levels": [0.01, 0.1]}}}
     points, skipped = points_of(sweep, base, registry)
     assert skipped.empty
+    own = build_registry()  # the shared registry stays as installed
     for point, level in zip(points, [0.01, 0.1], strict=True):
         assert point.spec.name == f"{base.name}~scale.tempco_pct_per_c={level:g}"
-        registry.add(point.spec)  # a point keeps its base's mode in its name
-        scale = next(u for u in registry.sensor(point.spec.name).stages if u.name == "scale")
+        own.add(point.spec)  # a point keeps its base's mode in its name
+        scale = next(u for u in own.sensor(point.spec.name).stages if u.name == "scale")
         assert scale.params["tempco_pct_per_c"] == level
         assert scale.params["temperature"]["celsius"] == 85.0
 

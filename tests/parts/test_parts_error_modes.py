@@ -7,7 +7,7 @@ import hashlib
 import numpy as np
 import pytest
 
-from sdt_framework import SDTError, build_registry
+from sdt_framework import SDTError
 from sdt_framework.bench.config import BenchmarkConfig
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
 from sdt_framework.chain import degrade
@@ -114,11 +114,6 @@ def test_a_part_without_error_terms_says_so_and_hashes_as_before(toy):
 def test_bad_error_sections_name_the_field(section, message):
     with pytest.raises(SpecFileError, match=message):
         load_part_text(TOY + "\n" + section + "\n", "toy.toml")
-
-
-@pytest.fixture(scope="module")
-def registry():
-    return build_registry()
 
 
 def test_the_temperature_moves_a_unit_by_its_tempco_and_not_at_25c(registry):

@@ -12,7 +12,6 @@ from typing import Any
 
 import pytest
 
-from sdt_framework import build_registry
 from sdt_framework.bench.config import BenchmarkConfig
 from sdt_framework.cli.main import main
 
@@ -51,12 +50,6 @@ def small_config(tmp_path):
         return BenchmarkConfig(**{**SMALL, "cache_dir": str(tmp_path / "cache"), **changes})
 
     return make
-
-
-@pytest.fixture(scope="session")
-def registry():
-    """The installed registry (built-in plugins)."""
-    return build_registry()
 
 
 @pytest.fixture

@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 from matplotlib import image
 
-from sdt_framework import build_registry
 from sdt_framework.bench.config import BenchmarkConfig
 from sdt_framework.bench.output import write_outputs
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
@@ -25,12 +24,6 @@ SMALL = {
     "jobs": 1,
     "report": False,
 }
-
-
-@pytest.fixture(scope="session")
-def registry():
-    """The installed registry (built-in plugins)."""
-    return build_registry()
 
 
 @pytest.fixture(scope="session")

@@ -11,17 +11,12 @@ from sklearn.model_selection import GroupKFold, cross_val_score
 from sklearn.pipeline import make_pipeline
 from sklearn.preprocessing import StandardScaler
 
-from sdt_framework import SDTError, UnknownNameError, build_registry
+from sdt_framework import SDTError, UnknownNameError
 from sdt_framework.chain import degrade
 from sdt_framework.features import cut_windows, extract
 from sdt_framework.sklearn import FeatureExtractor, SensorTwin, row_noise_ids, window_rows
 
 FS = 20000.0
-
-
-@pytest.fixture(scope="module")
-def registry():
-    return build_registry()
 
 
 @pytest.fixture(scope="module")
