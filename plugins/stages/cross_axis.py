@@ -23,6 +23,7 @@ from numpy.typing import NDArray
 from pydantic import BaseModel, ConfigDict, Field
 
 from sdt_framework import SDTError, hookimpl
+from sdt_framework.chain import SameRate
 from sdt_framework.stages import StageContext, StageSpec
 
 Batch = NDArray[np.float64]
@@ -48,18 +49,13 @@ class CrossAxisParams(BaseModel):
 
 
 @dataclass(frozen=True)
-class CrossAxis:
+class CrossAxis(SameRate):
     """a_out = a + (pct / 100) (a_j + a_k), a_j and a_k the node's other axes (ctx.node)."""
 
     name: str
     fs_in: float
     gain: float
     sensor: str
-
-    @property
-    def fs_out(self) -> float:
-        """Same as ``fs_in``."""
-        return self.fs_in
 
     def apply(self, x: Batch, ctx: object) -> Batch:
         """Add the other axes' share to every sample; refuses input without a node."""

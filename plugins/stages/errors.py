@@ -15,6 +15,7 @@ from numpy.typing import NDArray
 from pydantic import BaseModel, ConfigDict, Field
 
 from sdt_framework import SDTError, hookimpl
+from sdt_framework.chain import SameRate
 from sdt_framework.stages import StageContext, StageSpec, TemperatureProfile
 
 Batch = NDArray[np.float64]
@@ -53,17 +54,12 @@ class NonlinearityParams(BaseModel):
 
 
 @dataclass(frozen=True)
-class Offset:
+class Offset(SameRate):
     """a_out = a + b0 + k_b (T(t) - T_ref): constant offset plus its temperature drift."""
 
     name: str
     fs_in: float
     params: OffsetParams
-
-    @property
-    def fs_out(self) -> float:
-        """Same as ``fs_in``."""
-        return self.fs_in
 
     def apply(self, x: Batch, ctx: object) -> Batch:
         """Add the offset (g) at every sample's temperature."""
@@ -72,17 +68,12 @@ class Offset:
 
 
 @dataclass(frozen=True)
-class Scale:
+class Scale(SameRate):
     """a_out = a (1 + e0 + k_s (T(t) - T_ref)): sensitivity error plus its temperature drift."""
 
     name: str
     fs_in: float
     params: ScaleParams
-
-    @property
-    def fs_out(self) -> float:
-        """Same as ``fs_in``."""
-        return self.fs_in
 
     def apply(self, x: Batch, ctx: object) -> Batch:
         """Scale every sample by the sensitivity at its temperature."""
@@ -92,7 +83,7 @@ class Scale:
 
 
 @dataclass(frozen=True)
-class Nonlinearity:
+class Nonlinearity(SameRate):
     """a_out = a + k2 a^2 + k3 a^3 with k2 = p2 / (100 FS), k3 = p3 / (100 FS^2).
 
     p2 and p3 are the second- and third-order deviations at full scale FS in %
@@ -104,11 +95,6 @@ class Nonlinearity:
     fs_in: float
     k2: float
     k3: float
-
-    @property
-    def fs_out(self) -> float:
-        """Same as ``fs_in``."""
-        return self.fs_in
 
     def apply(self, x: Batch, ctx: object) -> Batch:
         """Apply the polynomial to every sample."""

@@ -19,6 +19,7 @@ from pydantic import BaseModel, ConfigDict, Field
 from scipy.signal import lfilter
 
 from sdt_framework import hookimpl
+from sdt_framework.chain import SameRate
 from sdt_framework.stages import StageContext, StageSpec, row_normals
 
 Batch = NDArray[np.float64]
@@ -69,7 +70,7 @@ class WhiteParams(BaseModel):
 
 
 @dataclass(frozen=True)
-class Additive:
+class Additive(SameRate):
     """A random process added to the signal: ``process(z)`` maps draws to g."""
 
     name: str
@@ -77,11 +78,6 @@ class Additive:
     kind: str
     a: float
     b: float = 0.0
-
-    @property
-    def fs_out(self) -> float:
-        """Same as ``fs_in``."""
-        return self.fs_in
 
     def process(self, z: Batch) -> Batch:
         """The process in g from standard normal draws ``z`` (rows x samples)."""

@@ -6,8 +6,9 @@ degrade(x, fs, sensor, seed=0, *, noise=True, label="", first_index=0, ...)
     What a sensor would have recorded of a 1-D signal or a 2-D batch.
 compile_chain(sensor, fs), build_stages(sensor, fs), Chain
     The chain as an ordered tuple of stages, cached per (profile, rate).
-LowPass, Sample, WhiteNoise, Quantise, Stage, RunContext
-    The stages, each usable on its own, and the protocol a new stage follows.
+LowPass, Sample, WhiteNoise, Quantise, Stage, RunContext, SameRate
+    The stages, each usable on its own, the protocol a new stage follows, and
+    the mixin of a stage that keeps its input's rate.
 noise_check(sensor, ...), NoiseCheck, plot_noise_check(result, path)
     The zero-motion noise validation of paper section 3.1 / Table 2.
 ChainInputError, ChainInputTypeError
@@ -25,7 +26,16 @@ from .filters import design_lowpass, is_skipped, lowpass_gain
 from .noise_check import NoiseCheck, WindowStats, noise_check, window_stats
 from .noise_plot import plot_noise_check
 from .simulable import simulation_problem
-from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise, sample_grid
+from .stages import (
+    LowPass,
+    Quantise,
+    RunContext,
+    SameRate,
+    Sample,
+    Stage,
+    WhiteNoise,
+    sample_grid,
+)
 
 __all__ = [
     "Chain",
@@ -35,6 +45,7 @@ __all__ = [
     "NoiseCheck",
     "Quantise",
     "RunContext",
+    "SameRate",
     "Sample",
     "Stage",
     "WhiteNoise",

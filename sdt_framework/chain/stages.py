@@ -27,6 +27,7 @@ __all__ = [
     "LowPass",
     "Quantise",
     "RunContext",
+    "SameRate",
     "Sample",
     "Stage",
     "WhiteNoise",
@@ -78,18 +79,24 @@ class Stage(Protocol):
         ...
 
 
+class SameRate:
+    """Mixin of a stage whose output runs at its input's rate: ``fs_out`` is ``fs_in``."""
+
+    fs_in: float
+
+    @property
+    def fs_out(self) -> float:
+        """Same as ``fs_in``."""
+        return self.fs_in
+
+
 @dataclass(frozen=True)
-class LowPass:
+class LowPass(SameRate):
     """A causal IIR low-pass in SOS form, zero initial conditions (stages 1, 2 and 5)."""
 
     name: str
     fs_in: float
     sos: NDArray[np.float64] = field(repr=False)
-
-    @property
-    def fs_out(self) -> float:
-        """Same as ``fs_in``: filtering keeps the rate."""
-        return self.fs_in
 
     def apply(self, x: Batch, ctx: RunContext) -> Batch:
         """Filter every row along the last axis."""
@@ -155,7 +162,7 @@ class Sample:
 
 
 @dataclass(frozen=True)
-class WhiteNoise:
+class WhiteNoise(SameRate):
     """Additive white Gaussian noise, sigma = NSD sqrt(F/2) (stage 4, paper eq. 2).
 
     Row i draws from ``seeding.rng(ctx.seed, ctx.acquisition_ids[i])``.
@@ -164,11 +171,6 @@ class WhiteNoise:
     fs_in: float
     nsd_ug_rthz: float
     name: str = "noise"
-
-    @property
-    def fs_out(self) -> float:
-        """Same as ``fs_in``."""
-        return self.fs_in
 
     @property
     def sigma_g(self) -> float:
@@ -189,18 +191,13 @@ class WhiteNoise:
 
 
 @dataclass(frozen=True)
-class Quantise:
+class Quantise(SameRate):
     """Saturation to [-G_max, G_max] then rounding to D = 2 G_max / 2**B (stage 6, eq. 4)."""
 
     fs_in: float
     full_scale_g: float
     bits: int
     name: str = "quantise"
-
-    @property
-    def fs_out(self) -> float:
-        """Same as ``fs_in``."""
-        return self.fs_in
 
     @property
     def step_g(self) -> float:
