@@ -17,7 +17,6 @@ import typer
 from rich.table import Table
 from rich.text import Text
 
-from ..errors import SDTError
 from .common import console, err_console, registry, warn
 from .progress import progress_bar
 
@@ -233,23 +232,23 @@ def benchmark(
 
 def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: list[bool]) -> bool:
     """Plan, check the size, run, write; True if some classifier failed in all its runs."""
-    from ..bench.estimate import CONFIRM_ABOVE_SECONDS, estimate
+    from ..bench.estimate import CONFIRM_ABOVE_SECONDS
     from ..bench.output import write_outputs
     from ..bench.runner import plan_benchmark, preflight, run_benchmark
+    from .planned import check_size, print_skipped
 
     plan = plan_benchmark(config, registry(ctx))
-    size = estimate(plan, stored_runs=len(list((out_dir / "runs").glob("*.json"))))
-    if size.seconds > CONFIRM_ABOVE_SECONDS and not yes:
-        raise SDTError(
-            f"this benchmark is {size.line()}; add --yes to start it, "
-            f"or lower --repeats or select fewer sensors, classifiers or machines"
-        )
+    size = check_size(
+        plan,
+        out_dir,
+        yes,
+        "benchmark",
+        "add --yes to start it, or lower --repeats or select fewer sensors, classifiers or "
+        "machines",
+    )
     preflight(plan, out_dir)
     claimed.append(True)
-    for name, reason in plan.skipped_sensors.items():
-        err_console.print(f"skipped sensor {name}: {reason}")
-    for (machine, scenario), reason in sorted(plan.skipped.items()):
-        err_console.print(f"skipped {machine} / {scenario}: {reason}", highlight=False)
+    print_skipped(plan)
     console.print(
         f"{plan.dataset.name}: {len(plan.recordings)} recordings, {len(plan.sensors)} sensors, "
         f"{len(plan.classifiers)} classifiers, {len(config.scenarios)} scenarios, "

@@ -105,30 +105,27 @@ def _run(
     no_report: bool,
 ) -> dict[str, Any]:
     """Plan the sweep, check its size and the folder, run it, write and report."""
-    from ..bench.estimate import CONFIRM_ABOVE_SECONDS, estimate
     from ..bench.output import write_outputs
     from ..bench.runner import preflight, run_benchmark
-    from ..errors import SDTError
     from ..explore.output import write_explore
     from ..explore.run import explore_table, plan_explore
+    from .planned import check_size, print_skipped
     from .progress import progress_bar
 
     reg = registry(ctx)
     explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where)
     plan = explore_plan.plan
-    size = estimate(plan, stored_runs=len(list((out_dir / "runs").glob("*.json"))))
-    if size.seconds > CONFIRM_ABOVE_SECONDS and not yes:
-        raise SDTError(
-            f"this sweep is {size.line()}; add --yes to run it, or shrink it (--quick, fewer "
-            f"levels, repeats or classifiers)"
-        )
+    size = check_size(
+        plan,
+        out_dir,
+        yes,
+        "sweep",
+        "add --yes to run it, or shrink it (--quick, fewer levels, repeats or classifiers)",
+    )
     preflight(plan, out_dir)
     for row in explore_plan.skipped.itertuples():
         err_console.print(f"skipped point {row.point}: {row.reason}", highlight=False)
-    for name, reason in plan.skipped_sensors.items():
-        err_console.print(f"skipped sensor {name}: {reason}", highlight=False)
-    for (machine, scenario), reason in sorted(plan.skipped.items()):
-        err_console.print(f"skipped {machine} / {scenario}: {reason}", highlight=False)
+    print_skipped(plan)
     console.print(
         f"{len(explore_plan.points)} points ({len(explore_plan.skipped)} skipped) + reference "
         f"and base on {len(plan.recordings)} recordings: {size.line()} -> {out_dir}",
