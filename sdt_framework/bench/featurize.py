@@ -129,11 +129,11 @@ def _cache_path(job: FeatureJob, key: str) -> Path | None:
 
 
 def _open(job: FeatureJob) -> SharedPrefix:
-    """The job's recording, read, with its node's other axes when a sensor reads them."""
+    """The job's recording, read, with its node's other axes (the plan gives them only
+    when a sensor reads them)."""
     rec = job.recording
     label = f"{rec.source} ({rec.recording_id})"
-    needed = any(_needs_node(sensor, job) for sensor, _ in _variants(job))
-    node = tuple(other.load() for other in job.node) if needed and job.node else None
+    node = tuple(other.load() for other in job.node) or None
     return SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label, node=node)
 
 
