@@ -133,8 +133,15 @@ def _open(job: FeatureJob) -> SharedPrefix:
     when a sensor reads them)."""
     rec = job.recording
     label = f"{rec.source} ({rec.recording_id})"
-    node = tuple(other.load() for other in job.node) or None
-    return SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label, node=node)
+    others = None
+    if job.node:
+        others = {axis: r.load() for axis, r in zip(_other_axes(job), job.node, strict=True)}
+    return SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label, other_axes=others)
+
+
+def _other_axes(job: FeatureJob) -> list[str]:
+    """The node's other two axes, in the order of ``job.node``."""
+    return sorted({"x", "y", "z"} - {job.axis})
 
 
 def _compute(shared: SharedPrefix, job: FeatureJob, sensor: SensorSpec, chain_seed: int | None):

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import hashlib
 from collections import OrderedDict
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -72,9 +72,9 @@ class SharedPrefix:
         Worker threads for filtering (as in :func:`~sdt_framework.chain.degrade`).
     keep
         Intermediate arrays held at once.
-    node
-        The same acquisitions on the triaxial node's other two axes, for a
-        sensor with a node stage (as ``other_axes`` of ``degrade``).
+    other_axes
+        The same acquisitions on the triaxial node's other two axes, by axis,
+        for a sensor with a node stage (as in ``degrade``).
     """
 
     def __init__(
@@ -85,10 +85,10 @@ class SharedPrefix:
         label: str = "",
         threads: int = 1,
         keep: int = 6,
-        node: tuple[ArrayLike, ArrayLike] | None = None,
+        other_axes: Mapping[str, ArrayLike] | None = None,
     ) -> None:
         self.x = x
-        self.node = node
+        self.other_axes = other_axes
         self._node: tuple[NDArray[np.float64], NDArray[np.float64]] | None = None
         self.fs = fs
         self.label = label
@@ -116,9 +116,8 @@ class SharedPrefix:
         if self._checked is None:  # checked once: the samples do not change
             self._checked = check_signal(self.x, sensor, self.label)
         arr = self._checked
-        if self.node is not None and self._node is None:
-            others = dict(zip(("a", "b"), self.node, strict=True))
-            self._node = check_node(others, arr, sensor, self.label)
+        if self.other_axes is not None and self._node is None:
+            self._node = check_node(self.other_axes, arr, sensor, self.label)
         chain = compile_chain(sensor, self.fs, label=self.label)
         prefix, rest = split_chain(chain)
         batch = np.atleast_2d(arr)

@@ -71,7 +71,7 @@ def test_without_the_other_axes_it_is_one_clear_error():
 
 def test_shared_prefix_with_a_node_matches_degrade():
     ax, ay, az = tones((120.0, 310.0, 455.0))
-    shared = SharedPrefix(ax, FS, node=(ay, az))
+    shared = SharedPrefix(ax, FS, other_axes={"y": ay, "z": az})
     for sensor in (PLAIN, crossed(3.0)):
         want, _ = degrade(ax, FS, sensor, seed=5, other_axes={"y": ay, "z": az})
         got, _ = shared.degrade(sensor, seed=5)
