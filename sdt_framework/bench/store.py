@@ -6,6 +6,14 @@ resume every file is checked before it is trusted: a truncated file, a file
 that is not JSON, a JSON document of another shape or one whose key does not
 match its file name is named in a warning and ignored, and its run is
 computed again (the fresh result then replaces the file).
+
+A run file holds everything the output files need, so a resumed folder's
+files equal an uninterrupted run's: scores, per-class table, confusion matrix
+and the per-recording confusion counts (``per_recording``, which ``sdt
+compare`` resamples). A file without the counts (written by a version that did
+not store them) or whose counts do not add up to its test windows is
+incomplete: it is ignored like a damaged one and its run computed again; such
+old files are named in one warning, not one line each.
 """
 
 from __future__ import annotations
@@ -37,7 +45,10 @@ _FIELDS: dict[str, tuple[type, ...]] = {
     "per_class": (list,),
     "confusion": (list,),
     "classes": (list,),
+    "per_recording": (list,),
 }
+#: the only missing field of a run file written before per-recording counts were stored
+_OLD_FORMAT = "lacks field(s) ['per_recording']"
 
 
 def _problem(data: Any, path: Path) -> str | None:
@@ -59,12 +70,32 @@ def _problem(data: Any, path: Path) -> str | None:
         return "lacks run labels"
     if not math.isfinite(data["macro_f1"]) or not 0.0 <= data["macro_f1"] <= 1.0:
         return "macro_f1 is not a score between 0 and 1"
+    return _recording_problem(data["per_recording"], data["n_test"])
+
+
+def _recording_problem(rows: list[Any], n_test: int) -> str | None:
+    """Why ``rows`` are not a run's per-recording counts of ``n_test`` test windows, or None."""
+    shaped = all(
+        isinstance(row, list)
+        and len(row) == 4
+        and all(isinstance(v, str) for v in row[:3])
+        and isinstance(row[3], int)
+        and not isinstance(row[3], bool)
+        and row[3] > 0
+        for row in rows
+    )
+    if not shaped:
+        return "per_recording rows are not [recording, true, predicted, count]"
+    total = sum(row[3] for row in rows)
+    if total != n_test:
+        return f"per_recording counts add up to {total}, not its {n_test} test windows"
     return None
 
 
 def load_finished(runs_dir: Path, warn: Warn) -> dict[str, RunResult]:
     """The valid stored runs under ``runs_dir`` by key; every other file is warned about."""
     done: dict[str, RunResult] = {}
+    old: list[Path] = []
     for path in sorted(runs_dir.glob("*.json")):
         try:
             data = json.loads(path.read_bytes())
@@ -73,10 +104,18 @@ def load_finished(runs_dir: Path, warn: Warn) -> dict[str, RunResult]:
             warn(f"ignoring {path}: {reason}; its run will be computed again")
             continue
         problem = _problem(data, path)
-        if problem:
+        if problem == _OLD_FORMAT:
+            old.append(path)
+        elif problem:
             warn(f"ignoring {path}: {problem}; its run will be computed again")
-            continue
-        done[data["key"]] = RunResult(**{name: data[name] for name in _FIELDS})
+        else:
+            done[data["key"]] = RunResult(**{name: data[name] for name in _FIELDS})
+    if old:
+        warn(
+            f"ignoring {len(old)} run file{'s' if len(old) > 1 else ''} in {runs_dir} written "
+            f"without per-recording counts by an older version (e.g. {old[0].name}); "
+            f"{'their runs' if len(old) > 1 else 'its run'} will be computed again"
+        )
     return done
 
 

@@ -3,7 +3,8 @@
 Exit status: 0 when every classifier produced results; 1 when some classifier
 failed in every one of its runs (results are still written, a summary line
 names it and its first error); 2 for a user error (one line, nothing run);
-130 after Ctrl-C, with one line giving the exact command that resumes.
+130 after Ctrl-C and 143 after SIGTERM, each with one line giving the exact
+command that resumes.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from .progress import progress_bar
 
 EXIT_CLASSIFIER_FAILED = 1
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a process ended by Ctrl-C
+EXIT_TERMINATED = 143  # 128 + SIGTERM
 
 
 def _say(label: str, style: str, message: str) -> None:
@@ -38,19 +40,23 @@ def _resume_command(ctx: typer.Context, out_dir: Path, yes: bool) -> str:
     return shlex.join(command + (["--yes"] if yes else []))
 
 
-def _interrupted(ctx: typer.Context, out_dir: Path, yes: bool, claimed: bool) -> typer.Exit:
-    """The one line after Ctrl-C: how to resume once ``out_dir`` is claimed, else start again."""
+def _interrupted(
+    ctx: typer.Context, out_dir: Path, yes: bool, claimed: bool, terminated: bool = False
+) -> typer.Exit:
+    """The one line after Ctrl-C or SIGTERM: how to resume once ``out_dir`` is claimed,
+    else start again."""
+    label = "terminated:" if terminated else "interrupted:"
     if claimed:
         stored = len(list((out_dir / "runs").glob("*.json")))
         _say(
-            "interrupted:",
+            label,
             "yellow",
             f"{stored} finished run{'' if stored == 1 else 's'} kept in {out_dir}; resume with: "
             f"{_resume_command(ctx, out_dir, yes)}",
         )
     else:
-        _say("interrupted:", "yellow", "before the run started; run the same command again")
-    return typer.Exit(EXIT_INTERRUPTED)
+        _say(label, "yellow", "before the run started; run the same command again")
+    return typer.Exit(EXIT_TERMINATED if terminated else EXIT_INTERRUPTED)
 
 
 def _failures(results: Any) -> bool:
@@ -171,7 +177,7 @@ def benchmark(
     With no data it runs on the embedded synthetic-pump dataset. Every name
     resolves through the plugin registry, so installed sensor plugins and
     --sensor-file profiles join by name. Re-using --out resumes a run of the
-    same configuration; Ctrl-C stops it and prints the command that resumes.
+    same configuration; Ctrl-C (or SIGTERM) stops it and prints the command that resumes.
     A benchmark estimated at over an hour needs --yes.
 
     Example:
@@ -216,16 +222,16 @@ def benchmark(
         overrides["report"] = False
     out_dir = out or Path("results") / dt.datetime.now().strftime("%Y%m%d-%H%M%S")
     claimed: list[bool] = []  # set once the results folder is claimed (resumable from then on)
-    with watch_interrupts() as watch:
+    with watch_interrupts(terminate=True) as watch:
         try:
             config = load_config(config_file, overrides)
             failed = _run(ctx, config, out_dir, yes, claimed)
         except KeyboardInterrupt:
-            raise _interrupted(ctx, out_dir, yes, bool(claimed)) from None
+            raise _interrupted(ctx, out_dir, yes, bool(claimed), watch.terminated) from None
         except Exception:
-            if not watch.seen:  # e.g. a worker pool broken by the same Ctrl-C
+            if not watch.seen:  # e.g. a worker pool broken by the same Ctrl-C or SIGTERM
                 raise
-            raise _interrupted(ctx, out_dir, yes, bool(claimed)) from None
+            raise _interrupted(ctx, out_dir, yes, bool(claimed), watch.terminated) from None
     if failed:
         raise typer.Exit(EXIT_CLASSIFIER_FAILED)
 

@@ -80,17 +80,20 @@ def explore(
         overrides["quick"] = True
     out_dir = out or Path("results") / dt.datetime.now().strftime("explore-%Y%m%d-%H%M%S")
     resume = shlex.join(["sdt", "explore", str(sweep_file), "--out", str(out_dir)])
-    with watch_interrupts():
+    with watch_interrupts(terminate=True) as watch:
         try:
             tables = _run(ctx, sweep, protocol, overrides, str(sweep_file), out_dir, yes, no_report)
-        except KeyboardInterrupt:
+        except (KeyboardInterrupt, Exception) as exc:
+            if not isinstance(exc, KeyboardInterrupt) and not watch.seen:
+                raise  # not a pool broken by the same Ctrl-C or SIGTERM: a real error
             err_console.print(
-                f"interrupted: finished runs are kept in {out_dir}; resume with the same "
-                f"command and --out ({resume}{' --quick' if quick else ''})",
+                f"{'terminated' if watch.terminated else 'interrupted'}: finished runs are kept "
+                f"in {out_dir}; resume with the same command and --out "
+                f"({resume}{' --quick' if quick else ''})",
                 highlight=False,
                 soft_wrap=True,
             )
-            raise typer.Exit(130) from None
+            raise typer.Exit(143 if watch.terminated else 130) from None
     _print_min_spec(tables["min_spec"])
 
 
