@@ -12,7 +12,8 @@ from rich.table import Table
 from rich.text import Text
 
 from ..errors import SDTError
-from .common import console, print_json
+from .common import console, print_json, warn
+from .outdir import output_folder
 
 __all__ = ["compare"]
 
@@ -81,6 +82,56 @@ def _labels(folders: list[Any]) -> list[str]:
     return names if names[0] != names[1] else [str(f.path) for f in folders]
 
 
+def _resume_command(folder: Any) -> str:
+    """The command that rewrites every output file of ``folder`` from its stored runs."""
+    root = folder.path
+    if (root / "sweep.toml").is_file():
+        return f"sdt explore {root / 'sweep.toml'} --out {root}"
+    return f"sdt benchmark {root / 'config.toml'} --out {root}"
+
+
+def _check_recordings(folder: Any) -> None:
+    """Refuse per-recording counts that do not cover the runs; warn when there are none.
+
+    Counts missing for some runs would leave those cells without their
+    recording-level interval and could move their labels (inconclusive to
+    better), with nothing on screen to tell: such a folder is refused with the
+    way to repair it. A folder without the file at all (written before it
+    existed, or the file deleted on purpose) is compared on repetitions,
+    with a warning.
+    """
+    if folder.per_recording_problem:
+        raise SDTError(
+            f"{folder.per_recording_problem}; compared without it whole, labels could change "
+            f"unseen. Rewrite it by resuming ({_resume_command(folder)}: finished runs are "
+            f"reused), or delete it to compare on the repetition intervals only"
+        )
+    if folder.per_recording is None:
+        warn(
+            f"{folder.path / 'per_recording.parquet'} is missing: the labels rest on the "
+            f"repetition intervals only (no recording-level intervals)"
+        )
+
+
+def _unpaired(comparison: Any) -> None:
+    """One warning naming the runs left out because their partner has no successful run."""
+    left = comparison.unpaired
+    if left.empty:
+        return
+    keys = [c for c in left.columns if c not in ("present", "missing")]
+    named = [
+        f"{row['present']} "
+        + " ".join(str(row[k]) for k in keys if str(row[k]))
+        + f" (no {row['missing']} run)"
+        for _, row in left.head(3).iterrows()
+    ]
+    more = f"; and {len(left) - 3} more" if len(left) > 3 else ""
+    warn(
+        f"{len(left)} run{'s' if len(left) > 1 else ''} left out: no successful partner to "
+        f"pair with ({', '.join(keys)}): " + "; ".join(named) + more
+    )
+
+
 def _two_folders(folders: list[Any], baseline: str | None) -> tuple[dict[str, Any], Path]:
     from ..verdict import stack_folders
 
@@ -89,7 +140,7 @@ def _two_folders(folders: list[Any], baseline: str | None) -> tuple[dict[str, An
         raise SDTError(f"with two folders --baseline must be one of {labels}, got {baseline!r}")
     records = [f.per_recording for f in folders]
     per_recording = None
-    if all(r is not None and not r.empty for r in records):
+    if all(r is not None for r in records):
         per_recording = stack_folders(records, labels)
     options = {
         "results": stack_folders([f.results for f in folders], labels),
@@ -123,6 +174,14 @@ def compare(
         typer.Option("--margin", help="Equivalence margin in Macro F1 (> 0)."),
     ] = 0.02,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON instead of tables.")] = False,
+    out: Annotated[
+        Path | None,
+        typer.Option(
+            "--out",
+            help="Folder for the comparison table (default: the results folder; needed when "
+            "that folder is read-only).",
+        ),
+    ] = None,
 ) -> None:
     """Paired comparison of every sensor with the reference, and the verdict.
 
@@ -132,9 +191,12 @@ def compare(
     test recordings, a paired t p-value (Holm-adjusted over cells) and the
     label equivalent / worse / better / inconclusive at the margin; then the
     Friedman test, Nemenyi critical difference and plain-sentence verdict.
-    Writes comparison.csv into RESULTS_DIR. With two folders (e.g. two
-    feature sets), runs are paired by machine, scenario, sensor, classifier
-    and repetition, and the table goes to OTHER_DIR/comparison_vs_<first>.csv.
+    Writes comparison.csv into RESULTS_DIR (or --out). With two folders (e.g.
+    two feature sets), runs are paired by machine, scenario, sensor,
+    classifier and repetition, and the table goes to
+    OTHER_DIR/comparison_vs_<first>.csv (or into --out). Runs without a
+    partner are named in a warning; a per_recording.parquet that does not
+    cover every run is refused (one line says how to rewrite it).
 
     Example:
 
@@ -145,6 +207,8 @@ def compare(
       sdt compare results/first-look --baseline adxl357 --margin 0.05 --json
 
       sdt compare results/paper8 results/my-features
+
+      sdt compare /archive/run-1 --out results/run-1-verdict
     """
     from ..bench.results import write_frame
     from ..report.load import load_results
@@ -154,6 +218,8 @@ def compare(
     if len(results_dirs) > 2:
         raise SDTError(f"give one or two results folders, got {len(results_dirs)}")
     folders = [load_results(path) for path in results_dirs]
+    for folder in folders:
+        _check_recordings(folder)
     if len(folders) == 2:
         options, csv_path = _two_folders(folders, baseline)
     else:
@@ -166,7 +232,9 @@ def compare(
             "order": folder.sensors,
         }
         csv_path = folder.path / "comparison.csv"
+    csv_path = output_folder(csv_path.parent, out, "the comparison table") / csv_path.name
     comparison = run_compare(margin=margin, **options)
+    _unpaired(comparison)
     write_frame(comparison.table, csv_path)
     findings = verdict(comparison)
     if as_json:
@@ -178,6 +246,7 @@ def compare(
                 "treatment": comparison.treatment,
                 "csv": str(csv_path),
                 "verdict": [{"scope": f.scope, "text": f.text} for f in findings],
+                "unpaired": json.loads(comparison.unpaired.to_json(orient="records")),
                 "ranking": None
                 if ranking is None
                 else {

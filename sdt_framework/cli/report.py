@@ -10,6 +10,7 @@ import typer
 
 from ..errors import SDTError
 from .common import console, registry
+from .outdir import output_folder
 
 __all__ = ["report"]
 
@@ -23,8 +24,16 @@ def report(
         str,
         typer.Option("--format", help="Comma-separated: md (report.md), html (report.html)."),
     ] = "md,html",
+    out: Annotated[
+        Path | None,
+        typer.Option(
+            "--out",
+            help="Folder for the report and figures (default: RESULTS_DIR; needed when it is "
+            "read-only).",
+        ),
+    ] = None,
 ) -> None:
-    """Write report.md and a self-contained report.html into RESULTS_DIR.
+    """Write report.md and a self-contained report.html into RESULTS_DIR (or --out).
 
     Table 4 (mean ± SD Macro F1), deltas to the reference sensor, failed runs,
     paper Fig. 2, 3, 4, 6 and 7 (also as PNG files in RESULTS_DIR/figures),
@@ -38,19 +47,24 @@ def report(
       sdt report results/first-look
 
       sdt report results/first-look --format html
+
+      sdt report /archive/run-1 --out results/run-1-report
     """
     from ..report import write_report  # matplotlib only when a report is drawn
 
     formats = tuple(part.strip() for part in format_.split(",") if part.strip())
     if not formats:
         raise SDTError("--format needs md, html or md,html")
+    if not Path(results_dir).is_dir():  # named as a missing results folder, not an output one
+        raise SDTError(f"{results_dir}: not a results folder (no such directory)")
+    target = output_folder(Path(results_dir), out, "the report")
     start = time.perf_counter()
-    written = write_report(results_dir, formats, registry=registry(ctx))
-    figures = sorted((Path(results_dir) / "figures").glob("*.png"))
+    written = write_report(results_dir, formats, registry=registry(ctx), out_dir=target)
+    figures = sorted((target / "figures").glob("*.png"))
     console.print(
         f"report of {results_dir} in {time.perf_counter() - start:.1f} s: "
         + ", ".join(str(p) for p in written.values())
-        + f" ({len(figures)} figures in {Path(results_dir) / 'figures'})",
+        + f" ({len(figures)} figures in {target / 'figures'})",
         highlight=False,
         soft_wrap=True,
     )

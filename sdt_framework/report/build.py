@@ -141,8 +141,9 @@ def write_report(
     formats: Sequence[str] = FORMATS,
     *,
     registry: Any = None,
+    out_dir: str | os.PathLike[str] | None = None,
 ) -> dict[str, Path]:
-    """Write the report of ``results_dir`` into that folder.
+    """Write the report of ``results_dir`` into that folder (or into ``out_dir``).
 
     Parameters
     ----------
@@ -152,11 +153,14 @@ def write_report(
         Any of "md" (report.md, figures linked) and "html" (report.html, self-contained).
     registry
         Registry used to look up sensors and the dataset; default: the installed one.
+    out_dir
+        Folder for the report and its figures (default ``results_dir``), e.g.
+        when ``results_dir`` is read-only; it is created if needed.
 
     Returns
     -------
     dict
-        ``{format: path}`` of each file written; figures go to ``results_dir/figures``.
+        ``{format: path}`` of each file written; figures go to ``<out_dir>/figures``.
 
     Raises
     ------
@@ -172,15 +176,17 @@ def write_report(
         from ..registry import build_registry
 
         registry = build_registry()
-    blocks = build_blocks(folder, registry, folder.path / "figures")
+    target = Path(out_dir) if out_dir is not None else folder.path
+    target.mkdir(parents=True, exist_ok=True)
+    blocks = build_blocks(folder, registry, target / "figures")
     took = time.perf_counter() - start
     blocks.append(Paragraph(f"Report drawn in {took:.1f} s by `sdt report`."))
     written: dict[str, Path] = {}
     if "md" in formats:
-        written["md"] = folder.path / "report.md"
-        atomic_write_text(written["md"], render_markdown(blocks, folder.path))
+        written["md"] = target / "report.md"
+        atomic_write_text(written["md"], render_markdown(blocks, target))
     if "html" in formats:
-        written["html"] = folder.path / "report.html"
+        written["html"] = target / "report.html"
         title = f"sdt-framework report: {folder.path.name}"
         atomic_write_text(written["html"], render_html(blocks, title))
     return written

@@ -5,6 +5,12 @@ nothing to report, and that is one clear :class:`~sdt_framework.errors.SDTError`
 naming the path. Every other file may be missing or unreadable; it is then
 ``None`` here and listed in :attr:`ResultsFolder.problems`, so the report can
 say what it could not show instead of crashing.
+
+``per_recording.parquet`` is also checked against the results: counts missing
+for some runs (or not adding up to their test windows) would silently change
+the verdict's labels, so such a file is set aside like an unreadable one and
+:attr:`ResultsFolder.per_recording_problem` says why (``sdt compare`` then
+refuses the folder; the report lists the problem and compares on repetitions).
 """
 
 from __future__ import annotations
@@ -18,7 +24,8 @@ from typing import Any
 import pandas as pd
 
 from ..bench.config import BenchmarkConfig, load_config
-from ..errors import SDTError
+from ..errors import SDTError, one_line
+from ..verdict.inputs import recording_gaps
 
 __all__ = ["ResultsFolder", "load_results"]
 
@@ -39,6 +46,8 @@ class ResultsFolder:
     config_text: str | None = None
     summary: dict[str, Any] | None = None
     problems: list[str] = field(default_factory=list)
+    #: why per_recording.parquet was set aside (unreadable, or not matching the results)
+    per_recording_problem: str | None = None
 
     @property
     def ok(self) -> pd.DataFrame:
@@ -76,6 +85,20 @@ class ResultsFolder:
 
 def _read(path: Path) -> pd.DataFrame:
     return pd.read_parquet(path) if path.suffix == ".parquet" else pd.read_csv(path)
+
+
+def _check_per_recording(folder: ResultsFolder) -> None:
+    """Set per_recording.parquet aside when it does not cover exactly the folder's runs."""
+    if folder.per_recording is None:
+        return
+    gap = recording_gaps(folder.results, folder.per_recording)
+    if gap is None:
+        return
+    folder.per_recording = None
+    folder.per_recording_problem = f"{folder.path / 'per_recording.parquet'} {gap}"
+    folder.problems.append(
+        f"per_recording.parquet {gap}; the verdict uses the repetition intervals only"
+    )
 
 
 def load_results(results_dir: str | os.PathLike[str]) -> ResultsFolder:
@@ -118,6 +141,9 @@ def load_results(results_dir: str | os.PathLike[str]) -> ResultsFolder:
             setattr(folder, attr, _read(path))
         except Exception as exc:  # reported; the rest of the report goes on
             folder.problems.append(f"{name} could not be read: {exc}")
+            if attr == "per_recording":
+                folder.per_recording_problem = f"{path} cannot be read ({one_line(exc, 160)})"
+    _check_per_recording(folder)
     config_path = root / "config.toml"
     if config_path.is_file():
         folder.config_text = config_path.read_text(encoding="utf-8")

@@ -13,7 +13,7 @@ over the cells), the TOST p-value and the label (:mod:`.equivalence`).
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
@@ -22,6 +22,7 @@ from ..bench.results import SCENARIO_TITLES
 from ..errors import SDTError
 from .aggregate import aggregate_rows, cell_rows
 from .equivalence import combine
+from .inputs import unpaired_runs
 from .paired import holm, paired_t_pvalue, t_interval, tost_pvalue
 from .ranking import Ranking, friedman_nemenyi
 from .recordings import RecordingSets
@@ -67,6 +68,8 @@ class Comparison:
     means: pd.DataFrame  # mean Macro F1 per group (rows) and treatment (columns)
     ranking: Ranking | None
     ranking_note: str
+    #: pairs left out because one side has no successful run (see :func:`.inputs.unpaired_runs`)
+    unpaired: pd.DataFrame = field(default_factory=pd.DataFrame)
 
     @property
     def candidates(self) -> list[str]:
@@ -161,6 +164,7 @@ def compare(
     wide = _pivot(ok, cells, treatment)
     candidates = [c for c in order if c in wide.columns and c != baseline]
     candidates += sorted(c for c in wide.columns if c != baseline and c not in candidates)
+    unpaired = unpaired_runs(wide, baseline, candidates)
     diffs = {c: (wide[c] - wide[baseline]).dropna() for c in candidates}
     diffs = {c: d for c, d in diffs.items() if not d.empty}
     if not diffs:
@@ -213,7 +217,7 @@ def compare(
             f"({', '.join(cells)}); here {blocks.shape[1]} and {blocks.shape[0]}"
         )
     return Comparison(
-        baseline, margin, alpha, treatment, cells, groups, table, means, ranking, note
+        baseline, margin, alpha, treatment, cells, groups, table, means, ranking, note, unpaired
     )
 
 
