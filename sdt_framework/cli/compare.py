@@ -120,15 +120,17 @@ def _unpaired(comparison: Any) -> None:
         return
     keys = [c for c in left.columns if c not in ("present", "missing")]
     named = [
-        f"{row['present']} "
-        + " ".join(str(row[k]) for k in keys if str(row[k]))
-        + f" (no {row['missing']} run)"
+        f"{row['present']}: "
+        + " ".join(f"{k}={row[k]}" for k in keys if str(row[k]))
+        + f" has no partner in {row['missing']}"
         for _, row in left.head(3).iterrows()
     ]
     more = f"; and {len(left) - 3} more" if len(left) > 3 else ""
     warn(
-        f"{len(left)} run{'s' if len(left) > 1 else ''} left out: no successful partner to "
-        f"pair with ({', '.join(keys)}): " + "; ".join(named) + more
+        f"{len(left)} run{'s' if len(left) > 1 else ''} left out of the comparison, "
+        f"{'their partners have' if len(left) > 1 else 'its partner has'} no successful run: "
+        + "; ".join(named)
+        + more
     )
 
 

@@ -65,7 +65,8 @@ report = false
 cache_dir = "{cache}"
 """
 BENCHMARK = '[benchmark]\nsensors = ["wilcoxon-786b10", "adxl345"]\n' + PROTOCOL
-SWEEP = """
+SWEEP = (
+    """
 [sweep]
 base = "adxl345"
 target = {{ max_loss = 0.1 }}
@@ -75,7 +76,9 @@ levels = [90, 290]
 
 [benchmark]
 scenarios = ["forward"]
-""" + PROTOCOL
+"""
+    + PROTOCOL
+)
 
 BENCH_TABLES = [
     "results.parquet",
