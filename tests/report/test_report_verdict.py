@@ -108,6 +108,8 @@ def test_bad_input_is_one_line_and_exit_2(results_dir, tmp_path, monkeypatch, ca
     shutil.copytree(results_dir, moved)
     frame = pd.read_parquet(moved / "results.parquet")
     frame.assign(machine="Motor-9").to_parquet(moved / "results.parquet")  # nothing in common
+    counts = pd.read_parquet(moved / "per_recording.parquet")  # kept matching its results
+    counts.assign(machine="Motor-9").to_parquet(moved / "per_recording.parquet")
     cases = [
         (["compare", tmp_path / "missing"], "not a results folder"),
         (["compare", results_dir, "--baseline", "adxl999"], "baseline 'adxl999'"),
