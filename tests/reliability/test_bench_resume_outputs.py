@@ -232,3 +232,22 @@ def test_an_explore_folder_after_sigterm_and_resumes_equals_the_uninterrupted_on
 
     run(command, env)  # and a full resume of the finished folder
     assert_same_outputs(resumed, out, BENCH_TABLES + EXPLORE_TABLES, texts)
+
+
+def test_run_files_without_per_recording_counts_are_recomputed_with_one_warning(
+    clean, env, tmp_path
+):
+    config, out = clean
+    old = shutil.copytree(out, tmp_path / "old")
+    files = sorted((old / "runs").glob("*.json"))
+    for path in files:  # as a version that did not store the counts wrote them
+        record = json.loads(path.read_text())
+        del record["per_recording"]
+        path.write_text(json.dumps(record))
+    done = run([*SDT, "benchmark", str(config), "--out", str(old)], env)
+    assert "12 runs (12 computed, 0 resumed, 0 failed)" in done.stdout
+    assert done.stderr.strip() == (
+        f"warning: ignoring 12 run files in {old / 'runs'} written without per-recording "
+        f"counts by an older version (e.g. {files[0].name}); their runs will be computed again"
+    )
+    assert_same_outputs(old, out, BENCH_TABLES, BENCH_TEXTS)
