@@ -66,7 +66,8 @@ def parse_toml(content: bytes | str, where: str | os.PathLike[str]) -> dict[str,
         raise SpecFileError(
             where,
             "",
-            f"holds a NUL byte (line {line}): a binary or UTF-16 file? save it as UTF-8 text",
+            f"holds a NUL byte (line {line}): a binary or UTF-16 file? "
+            f"save it as a UTF-8 TOML file",
         )
     try:
         data = tomllib.loads(text)
@@ -79,7 +80,10 @@ def parse_toml(content: bytes | str, where: str | os.PathLike[str]) -> dict[str,
     key = _too_deep(data)
     if key is not None:
         raise SpecFileError(
-            where, key, f"nests arrays or tables more than {MAX_DEPTH} levels deep; no field does"
+            where,
+            key,
+            f"nests arrays or tables more than {MAX_DEPTH} levels deep; "
+            f"no setting needs more than a few",
         )
     return data
 
@@ -87,7 +91,7 @@ def parse_toml(content: bytes | str, where: str | os.PathLike[str]) -> dict[str,
 def _decode(raw: bytes, where: str | os.PathLike[str]) -> str:
     for bom, name in _WIDE_BOMS.items():
         if raw.startswith(bom):
-            raise SpecFileError(where, "", f"is {name} text; save it as UTF-8")
+            raise SpecFileError(where, "", f"is {name} text; save it as a UTF-8 TOML file")
     try:
         return raw.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
