@@ -59,6 +59,23 @@ def test_a_config_that_is_not_utf8_is_one_line(sdt_main, tmp_path, content, need
     assert "UTF-8" in line  # what to do: save it as UTF-8
 
 
+def test_a_config_with_a_utf8_byte_order_mark_is_read(sdt_main, tmp_path):
+    """Windows editors write a BOM; the file is read (its invalid field is what is named)."""
+    config = write(tmp_path / "bench.toml", b"\xef\xbb\xbf[benchmark]\nrepeats = 0\n")
+    line = refused(sdt_main("benchmark", str(config), "--out", str(tmp_path / "out")))
+    assert line.startswith(f"error: {config}: field 'repeats': Input should be greater than")
+
+
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="needs /dev/zero")
+def test_a_config_that_never_ends_is_refused_after_16_mb(sdt_main, tmp_path):
+    # main read it whole (read_text) and grew memory until killed
+    line = refused(sdt_main("benchmark", "/dev/zero", "--out", str(tmp_path / "out")))
+    assert line == (
+        "error: /dev/zero: larger than 16 MB, too large for a TOML config or profile; "
+        "check that this is the right file"
+    )
+
+
 def test_a_benchmark_key_that_is_not_a_table_names_it(sdt_main, tmp_path):
     config = write(tmp_path / "bench.toml", "benchmark = 5\n")
     line = refused(sdt_main("benchmark", str(config), "--out", str(tmp_path / "out")))
