@@ -127,7 +127,7 @@ class SensorTwin(ClassNamePrefixFeaturesOutMixin, TransformerMixin, BaseEstimato
             X,
             float(self.fs),
             self.sensor_,
-            seed=int(self.seed),
+            seed=check_seed(self.seed),
             noise=bool(self.noise),
             label="SensorTwin input",
             acquisition_ids=row_noise_ids(X),
