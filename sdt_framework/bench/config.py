@@ -75,8 +75,12 @@ class BenchmarkConfig(BaseModel):
         description="Round features to this on-node type before classification "
         "(default: the feature set's declared dtype).",
     )
-    window_s: float = Field(default=0.64, gt=0, description="Window length, s.")
-    settle_s: float = Field(default=0.1, ge=0, description="Settling discarded per acquisition, s.")
+    window_s: float = Field(
+        default=0.64, gt=0, le=3600, description="Window length, s (finite, at most an hour)."
+    )
+    settle_s: float = Field(
+        default=0.1, ge=0, le=3600, description="Settling discarded per acquisition, s."
+    )
     scenarios: list[Literal["forward", "backward", "interpolation"]] = Field(
         default_factory=lambda: list(SCENARIOS), description="Generalisation scenarios."
     )

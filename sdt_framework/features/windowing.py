@@ -31,8 +31,18 @@ SETTLE_S = 0.1
 
 
 def samples_for(seconds: float, fs: float) -> int:
-    """Number of samples in ``seconds`` at ``fs`` Hz, ``round(seconds * fs)``."""
-    return round(float(seconds) * float(fs))
+    """Number of samples in ``seconds`` at ``fs`` Hz, ``round(seconds * fs)``.
+
+    A product that is not finite (``inf`` seconds, or 1e308 s at 3200 Hz) is an
+    ArgumentValueError naming both, not an OverflowError from ``round``.
+    """
+    product = float(seconds) * float(fs)
+    if not math.isfinite(product):
+        raise ArgumentValueError(
+            f"{seconds!r} s at {fs!r} Hz is not a finite number of samples; give a finite "
+            f"duration in seconds"
+        )
+    return round(product)
 
 
 @dataclass(frozen=True)

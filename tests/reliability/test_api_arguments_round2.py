@@ -50,6 +50,12 @@ def test_extract_refuses_a_non_finite_window_or_settling(argument, value):
         extract(signal, 3200.0, "paper8", **{argument: value})
 
 
+def test_extract_refuses_a_window_whose_sample_count_overflows():
+    signal = np.random.default_rng(0).normal(size=8000)
+    with pytest.raises(ArgumentValueError, match=r"^1e\+308 s at 3200.0 Hz is not a finite"):
+        extract(signal, 3200.0, "paper8", window_s=1e308)
+
+
 def test_extract_with_a_label_names_it_in_a_signal_error():
     with pytest.raises(SDTError, match=r"^run-7\.npy: acquisitions of 100"):
         extract(np.zeros(100), 3200.0, "paper8", label="run-7.npy")

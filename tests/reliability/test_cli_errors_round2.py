@@ -41,6 +41,16 @@ def test_an_infinite_window_or_settling_in_a_config_names_the_field(sdt_main, tm
     assert line == f"error: {config}: field {field!r}: Input should be a finite number (got inf)"
 
 
+def test_a_window_of_1e308_seconds_in_a_config_is_refused_by_its_bound(sdt_main, tmp_path):
+    # finite, but 1e308 s x 20 kHz overflows the sample count (main: OverflowError)
+    config = write(tmp_path / "bench.toml", "[benchmark]\nwindow_s = 1e308\n")
+    line = refused(sdt_main("benchmark", str(config), "--out", str(tmp_path / "out")))
+    assert line == (
+        f"error: {config}: field 'window_s': Input should be less than or equal to 3600 "
+        f"(got 1e+308)"
+    )
+
+
 @pytest.mark.parametrize(
     ("content", "needle"),
     [
