@@ -1,9 +1,10 @@
 """Argument checks and name lookup shared by the public Python API.
 
 ``degrade(x, fs, "adxl345")`` and ``extract(y, fs, "paper8")`` take a spec or a
-registered name; a name is looked up in :func:`default_registry`, built once on
-first use (entry points, ``SDT_SENSOR_PATH`` and the ``SDT_*`` switches of the
-environment at that moment). The checks below run once at the API boundary, so
+registered name (for a sensor also a part in a mode, ``"adxl355[range=8g]"``); a
+name is looked up in :func:`default_registry`, built once on first use (entry
+points, ``SDT_SENSOR_PATH`` and the ``SDT_*`` switches of the environment at
+that moment). The checks below run once at the API boundary, so
 a wrong type fails with a :class:`TypeError` naming the argument instead of
 being silently converted (``int(1.5)``, ``int("3")``, ``float(True)``) or failing
 deep inside numpy. Each error is also an :class:`~sdt_framework.errors.SDTError`,
@@ -21,7 +22,7 @@ import numpy as np
 
 from .errors import ArgumentTypeError, ArgumentValueError, one_line
 from .registry import Registry, build_registry
-from .specs import Spec
+from .specs import SensorSpec, Spec
 
 __all__ = [
     "check_rate",
@@ -53,6 +54,9 @@ def default_registry() -> Registry:
 def resolve(kind: type[S], value: object, argument: str) -> S:
     """``value`` itself if it is a ``kind`` spec, the registered one if it is a name.
 
+    A sensor name may be a catalogue part in a mode, ``"adxl355[range=8g]"``,
+    resolved as ``sdt degrade --sensor`` resolves it.
+
     Raises
     ------
     ArgumentTypeError
@@ -63,6 +67,8 @@ def resolve(kind: type[S], value: object, argument: str) -> S:
     if isinstance(value, kind):
         return value
     if isinstance(value, str):
+        if issubclass(kind, SensorSpec):  # a part in a mode too, as the CLI takes it
+            return default_registry().sensor(value)  # type: ignore[return-value]
         return default_registry()._get(kind, value)
     raise ArgumentTypeError(
         f"{argument} must be a {kind.__name__} or the name of a registered {kind.kind} (str), "

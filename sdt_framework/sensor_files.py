@@ -8,14 +8,14 @@ Python plugin; errors name the file, the field path and the reason.
 from __future__ import annotations
 
 import os
-import tomllib
 from collections.abc import Iterator
 from pathlib import Path
 
 from pydantic import ValidationError
 
-from .errors import SpecFileError
+from .errors import SpecFileError, one_line
 from .specs import SensorSpec
+from .toml_files import read_toml
 
 __all__ = ["ENV_SENSOR_PATH", "load_sensor_file", "sensor_files_from_env"]
 
@@ -25,23 +25,17 @@ ENV_SENSOR_PATH = "SDT_SENSOR_PATH"
 def load_sensor_file(path: str | os.PathLike[str]) -> list[SensorSpec]:
     """Read and validate every sensor profile in one TOML file."""
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise SpecFileError(path, "", "file not found; check the path") from None
-    except OSError as exc:
-        reason = exc.strerror or type(exc).__name__
-        raise SpecFileError(path, "", f"cannot read: {reason}; give a readable TOML file") from None
-    except UnicodeDecodeError as exc:
-        raise SpecFileError(
-            path, "", f"not UTF-8 text (byte {exc.start}); save it as a UTF-8 TOML file"
-        ) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise SpecFileError(path, "", f"not valid TOML: {exc}") from None
-
+    data = read_toml(path)
     tables = data.get("sensor", [data])
     if isinstance(tables, dict):
         tables = [tables]
+    if not isinstance(tables, list):
+        raise SpecFileError(
+            path,
+            "sensor",
+            f"must be a table [sensor] or tables [[sensor]] of profile fields, got "
+            f"{type(tables).__name__} {one_line(repr(tables), 60)}",
+        )
     specs = []
     for index, table in enumerate(tables):
         prefix = f"sensor[{index}]." if "sensor" in data else ""

@@ -10,15 +10,15 @@ same benchmark with ``sdt benchmark config.toml``.
 from __future__ import annotations
 
 import os
-import tomllib
 from pathlib import Path
 from typing import Any, Literal
 
 import tomli_w
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
-from ..errors import SDTError, SpecFileError
+from ..errors import SDTError, SpecFileError, one_line
 from ..io import atomic_write_text
+from ..toml_files import read_toml
 
 __all__ = [
     "SCENARIOS",
@@ -40,7 +40,7 @@ QUICK_NLN_EMP_ACQUISITIONS = 5
 class BenchmarkConfig(BaseModel):
     """Everything that defines a benchmark run (SPEC sections 5-7)."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
     dataset: str | None = Field(
         default=None,
@@ -75,8 +75,12 @@ class BenchmarkConfig(BaseModel):
         description="Round features to this on-node type before classification "
         "(default: the feature set's declared dtype).",
     )
-    window_s: float = Field(default=0.64, gt=0, description="Window length, s.")
-    settle_s: float = Field(default=0.1, ge=0, description="Settling discarded per acquisition, s.")
+    window_s: float = Field(
+        default=0.64, gt=0, le=3600, description="Window length, s (finite, at most an hour)."
+    )
+    settle_s: float = Field(
+        default=0.1, ge=0, le=3600, description="Settling discarded per acquisition, s."
+    )
     scenarios: list[Literal["forward", "backward", "interpolation"]] = Field(
         default_factory=lambda: list(SCENARIOS), description="Generalisation scenarios."
     )
@@ -135,13 +139,16 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
     where = "command line"
     if path is not None:
         where = str(path)
-        try:
-            data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
-        except FileNotFoundError:
-            raise SDTError(f"{path}: config file not found") from None
-        except tomllib.TOMLDecodeError as exc:
-            raise SDTError(f"{path}: not valid TOML: {exc}") from None
-        data = data.get("benchmark", data)
+        data = read_toml(path, missing="config file not found; check the path")
+        if "benchmark" in data:
+            data = data["benchmark"]
+            if not isinstance(data, dict):
+                raise SpecFileError(
+                    path,
+                    "benchmark",
+                    f"must be a table of options ([benchmark] followed by lines such as "
+                    f"repeats = 3), got {type(data).__name__} {one_line(repr(data), 60)}",
+                )
     if overrides.pop("quick", False):
         data = quick_preset({**data, **overrides})
     data.update(overrides)
@@ -153,7 +160,10 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
 
 def quick_preset(data: dict[str, Any]) -> dict[str, Any]:
     """The quick preset, under explicit settings: fewer repetitions and less data per run."""
-    options = dict(data.get("dataset_options", {}))
+    options = data.get("dataset_options", {})
+    if not isinstance(options, dict):  # the model names the field and the value
+        return {"repeats": QUICK_REPEATS, **data}
+    options = dict(options)
     source = data.get("data")
     if source is None and data.get("dataset") in (None, "synthetic-pump"):
         options.setdefault("duration", QUICK_SYNTHETIC_DURATION_S)

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import math
 import time
 from pathlib import Path
 from typing import Annotated
 
 import typer
 
+from ..errors import SDTError
 from .common import console, err_console, print_json, registry, table
 
 app = typer.Typer(help="List, generate and inspect datasets.", no_args_is_help=True)
@@ -82,6 +84,8 @@ def synth(
     from ..data.synth import FS_HZ
     from .guards import check_cost, check_output_folder, os_errors
 
+    if duration is not None and not (math.isfinite(duration) and duration > 0.2):
+        raise SDTError(f"--duration {duration}: give a finite number of seconds above 0.2")
     with os_errors(str(out)):
         existing = _existing_recordings(out, overwrite)
         given = {"seed": seed, "acquisitions": acquisitions, "duration": duration}
@@ -117,7 +121,6 @@ def synth(
 
 def _existing_recordings(out: Path, overwrite: bool) -> set[Path]:
     """Files already under OUT/Vibration; refused unless ``overwrite``."""
-    from ..errors import SDTError
 
     if out.exists() and not out.is_dir():
         raise SDTError(f"--out {out} is a file; give a folder (new, or empty of recordings)")

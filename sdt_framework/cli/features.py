@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 from typing import Annotated, Any
 
@@ -104,12 +105,18 @@ def extract_features(
     from ..features import extract, resolve_feature_set, write_feature_table
     from .guards import check_output_file, os_errors
 
+    for option, seconds in (("--window-s", window_s), ("--settle-s", settle_s)):
+        if not math.isfinite(seconds):
+            raise SDTError(f"{option} {seconds}: give a finite number of seconds")
     spec = resolve_feature_set(registry(ctx), feature_set)
     if out.suffix.lower() not in {".csv", ".parquet"}:
         raise SDTError(f"{out}: --out must end in .csv or .parquet")
     with os_errors():
         check_output_file(out, "--out", (".csv", ".parquet"), inputs=[input_path])
-        result = extract(_load_npy(input_path), fs, spec, window_s=window_s, settle_s=settle_s)
+        signal = _load_npy(input_path)
+        result = extract(
+            signal, fs, spec, window_s=window_s, settle_s=settle_s, label=str(input_path)
+        )
         write_feature_table(result, out)
     n_acq = len(set(result.acquisition.tolist()))
     console.print(

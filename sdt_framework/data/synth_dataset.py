@@ -12,6 +12,7 @@ features cached from an older generator are never served for a newer one.
 from __future__ import annotations
 
 import hashlib
+import math
 import os
 from collections.abc import Iterable
 from functools import partial
@@ -138,8 +139,8 @@ def open_synthetic(
     """
     if int(acquisitions) < 1:
         raise SDTError(f"synthetic-pump: acquisitions must be >= 1, got {acquisitions}")
-    if not float(duration) > 0.2:
-        raise SDTError(f"synthetic-pump: duration must be > 0.2 s, got {duration}")
+    if not 0.2 < float(duration) < math.inf:
+        raise SDTError(f"synthetic-pump: duration must be a finite number > 0.2 s, got {duration}")
     chosen_machines = _select(machines, m.MACHINES, "machine")
     known_conditions = {c for name in chosen_machines for c, _ in m.MACHINES[name].conditions}
     chosen_conditions = (

@@ -22,7 +22,6 @@ sweep file, the key and what to do, before any work.
 from __future__ import annotations
 
 import os
-import tomllib
 from pathlib import Path
 from typing import Any, Literal
 
@@ -35,7 +34,8 @@ from pydantic import (
     model_validator,
 )
 
-from ..errors import SDTError, SpecFileError
+from ..errors import SpecFileError
+from ..toml_files import read_toml
 from .stage_axes import flatten_stage_keys, is_stage_key
 from .ties import check_tie
 
@@ -79,7 +79,7 @@ DEMAND: dict[str, Literal["higher", "lower"]] = {
 
 
 class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
+    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
 
 class Axis(_Model):
@@ -236,22 +236,18 @@ def _where(exc: ValidationError) -> tuple[str, str]:
 def load_sweep(path: str | os.PathLike[str]) -> tuple[Sweep, dict[str, Any]]:
     """Read ``path``: the validated sweep and the raw ``[benchmark]`` table (protocol)."""
     path = Path(path)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise SDTError(
-            f"{path}: sweep file not found; `sdt explore --example` prints one"
-        ) from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SDTError(f"{path}: cannot read the sweep file ({exc})") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise SDTError(f"{path}: not valid TOML: {exc}") from None
+    data = read_toml(path, missing="sweep file not found; `sdt explore --example` prints one")
     unknown = sorted(set(data) - {"sweep", "benchmark"})
     if unknown:
         raise SpecFileError(path, unknown[0], "unknown table; a sweep has [sweep] and [benchmark]")
     if "sweep" not in data:
         raise SpecFileError(path, "sweep", "missing; `sdt explore --example` shows the format")
-    return parse_sweep(data["sweep"], path), dict(data.get("benchmark", {}))
+    protocol = data.get("benchmark", {})
+    if not isinstance(protocol, dict):
+        raise SpecFileError(
+            path, "benchmark", f"must be a table of options, got {type(protocol).__name__}"
+        )
+    return parse_sweep(data["sweep"], path), dict(protocol)
 
 
 def parse_sweep(table: dict[str, Any], where: str | os.PathLike[str] = "sweep") -> Sweep:

@@ -66,7 +66,7 @@ class FeatureExtractor:
         """The domain part: the feature set's compute on centred float64 windows."""
         return self.feature_set.compute(windows, fs)
 
-    def extract(self, x: np.ndarray, fs: float) -> FeatureTable:
+    def extract(self, x: np.ndarray, fs: float, *, label: str = "") -> FeatureTable:
         """Features of every window of ``x``.
 
         Parameters
@@ -77,6 +77,9 @@ class FeatureExtractor:
             real numbers (booleans, complex, objects and text are refused).
         fs
             Sampling rate, Hz.
+        label
+            The signal's name (its file), put before a message about the signal
+            (a NaN, too short for one window) so the error names it.
 
         Returns
         -------
@@ -92,8 +95,13 @@ class FeatureExtractor:
             empty (paper8: 10 Hz to Nyquist, 10-1000 Hz).
         """
         fs = check_rate(fs)
-        signal = check_signal(x)
-        cut = cut_windows(signal, fs, window_s=self.window_s, settle_s=self.settle_s)
+        try:
+            signal = check_signal(x)
+            cut = cut_windows(signal, fs, window_s=self.window_s, settle_s=self.settle_s)
+        except SDTError as exc:
+            if not label:
+                raise
+            raise type(exc)(f"{label}: {exc}") from None
         check_bands(self.feature_set, fs, cut.length)
         # One vectorised pass: float64 copy, each window minus its own mean.
         centred = cut.data - cut.data.mean(axis=1, keepdims=True, dtype=np.float64)
@@ -125,6 +133,7 @@ def extract(
     *,
     window_s: float = WINDOW_S,
     settle_s: float = SETTLE_S,
+    label: str = "",
 ) -> FeatureTable:
     """Extract ``feature_set`` from every window of ``x``; see :class:`FeatureExtractor`.
 
@@ -133,4 +142,5 @@ def extract(
     >>> table = extract(signal_g, 3200.0, "paper8")  # doctest: +SKIP
     >>> table.to_frame().head()  # doctest: +SKIP
     """
-    return FeatureExtractor(feature_set, window_s=window_s, settle_s=settle_s).extract(x, fs)
+    extractor = FeatureExtractor(feature_set, window_s=window_s, settle_s=settle_s)
+    return extractor.extract(x, fs, label=label)

@@ -14,11 +14,13 @@ memory once the settling samples are removed).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import SDTError
+from ..api import check_real
+from ..errors import ArgumentValueError, SDTError
 
 __all__ = ["SETTLE_S", "WINDOW_S", "Windows", "cut_windows", "samples_for"]
 
@@ -29,8 +31,18 @@ SETTLE_S = 0.1
 
 
 def samples_for(seconds: float, fs: float) -> int:
-    """Number of samples in ``seconds`` at ``fs`` Hz, ``round(seconds * fs)``."""
-    return round(float(seconds) * float(fs))
+    """Number of samples in ``seconds`` at ``fs`` Hz, ``round(seconds * fs)``.
+
+    A product that is not finite (``inf`` seconds, or 1e308 s at 3200 Hz) is an
+    ArgumentValueError naming both, not an OverflowError from ``round``.
+    """
+    product = float(seconds) * float(fs)
+    if not math.isfinite(product):
+        raise ArgumentValueError(
+            f"{seconds!r} s at {fs!r} Hz is not a finite number of samples; give a finite "
+            f"duration in seconds"
+        )
+    return round(product)
 
 
 @dataclass(frozen=True)
@@ -89,7 +101,9 @@ def cut_windows(
     ------
     SDTError
         Wrong dimensions, a non-positive rate or window, or an acquisition too
-        short for one window (the message says how many samples are needed).
+        short for one window (the message says how many samples are needed);
+        an infinite or NaN ``window_s``/``settle_s`` is an ArgumentValueError
+        (also a ValueError).
     """
     x = np.asarray(x)
     if x.ndim == 1:
@@ -101,6 +115,15 @@ def cut_windows(
         )
     if not (np.isfinite(fs) and fs > 0):
         raise SDTError(f"sampling rate must be a positive number of Hz, got {fs!r}")
+    for name, seconds, default in (
+        ("window_s", window_s, WINDOW_S),
+        ("settle_s", settle_s, SETTLE_S),
+    ):
+        if not math.isfinite(check_real(seconds, name, "seconds")):
+            raise ArgumentValueError(
+                f"{name} must be a finite number of seconds, got {seconds!r}; the paper's is "
+                f"{default:g}"
+            )
     length = samples_for(window_s, fs)
     settle = samples_for(settle_s, fs)
     if length < 1 or settle < 0:
@@ -114,7 +137,7 @@ def cut_windows(
         raise SDTError(
             f"acquisitions of {n_samples} samples are too short: one window at {fs:g} Hz needs "
             f"{settle + length} samples ({settle} settling + {length} window = "
-            f"{settle_s:g} s + {window_s:g} s)"
+            f"{settle_s:g} s + {window_s:g} s); give a longer signal or a shorter window"
         )
     used = x[:, settle : settle + per_acq * length]
     data = used.reshape(n_acq, per_acq, length).reshape(n_acq * per_acq, length)

@@ -8,12 +8,12 @@ path and the reason, as sensor files do.
 from __future__ import annotations
 
 import os
-import tomllib
-from pathlib import Path
+from typing import Any
 
 from pydantic import ValidationError
 
 from ..errors import SpecFileError
+from ..toml_files import parse_toml, read_toml
 from .model import PartSpec
 
 __all__ = ["load_part_file", "load_part_text"]
@@ -21,10 +21,10 @@ __all__ = ["load_part_file", "load_part_text"]
 
 def load_part_text(text: str, where: str | os.PathLike[str]) -> PartSpec:
     """Validate one part from TOML ``text``; ``where`` names it in errors."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise SpecFileError(where, "", f"not valid TOML: {exc}") from None
+    return _validate(parse_toml(text, where), where)
+
+
+def _validate(data: dict[str, Any], where: str | os.PathLike[str]) -> PartSpec:
     try:
         return PartSpec.model_validate(data)
     except ValidationError as exc:
@@ -38,11 +38,4 @@ def load_part_text(text: str, where: str | os.PathLike[str]) -> PartSpec:
 
 def load_part_file(path: str | os.PathLike[str]) -> PartSpec:
     """Read and validate the part in one TOML file."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise SpecFileError(path, "", "file not found") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SpecFileError(path, "", f"cannot read: {exc}") from None
-    return load_part_text(text, path)
+    return _validate(read_toml(path), path)

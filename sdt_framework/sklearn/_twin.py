@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from sklearn.base import BaseEstimator, ClassNamePrefixFeaturesOutMixin, TransformerMixin
 from sklearn.utils.validation import check_is_fitted, validate_data
 
+from sdt_framework.api import check_rate, check_real, check_seed
 from sdt_framework.chain import compile_chain, degrade
 from sdt_framework.chain.stages import sample_count
-from sdt_framework.errors import SDTError
+from sdt_framework.errors import ArgumentValueError, SDTError
 from sdt_framework.features import samples_for
 from sdt_framework.specs import SensorSpec
 
@@ -57,7 +60,8 @@ class SensorTwin(ClassNamePrefixFeaturesOutMixin, TransformerMixin, BaseEstimato
     fs
         Rate of the input rows, Hz.
     seed
-        Base seed of the injected noise.
+        Base seed of the injected noise, an integer (1.7 or True are refused at
+        :meth:`fit`, not truncated).
     noise
         False switches the noise stage off.
     settle_s
@@ -94,11 +98,12 @@ class SensorTwin(ClassNamePrefixFeaturesOutMixin, TransformerMixin, BaseEstimato
     def fit(self, X, y=None):
         """Check ``X`` and the parameters; resolve the sensor and the output length."""
         X = validate_data(self, X, dtype=np.float64)
+        check_seed(self.seed)  # 1.7 or True refused, not truncated to 1
+        check_rate(self.fs)
         spec = _resolve_sensor(self.sensor)
-        if not (np.isfinite(self.fs) and self.fs > 0):
-            raise ValueError(f"fs must be a positive rate in Hz, got {self.fs!r}")
-        if not (np.isfinite(self.settle_s) and self.settle_s >= 0):
-            raise ValueError(f"settle_s must be >= 0 s, got {self.settle_s!r}")
+        settle_s = check_real(self.settle_s, "settle_s", "seconds")
+        if not (math.isfinite(settle_s) and settle_s >= 0):
+            raise ArgumentValueError(f"settle_s must be a finite number >= 0 s, got {settle_s!r}")
         chain = compile_chain(spec, float(self.fs))
         n_out = sample_count(X.shape[1], float(self.fs), chain.fs_out)
         settle = samples_for(self.settle_s, chain.fs_out)
@@ -122,7 +127,7 @@ class SensorTwin(ClassNamePrefixFeaturesOutMixin, TransformerMixin, BaseEstimato
             X,
             float(self.fs),
             self.sensor_,
-            seed=int(self.seed),
+            seed=check_seed(self.seed),
             noise=bool(self.noise),
             label="SensorTwin input",
             acquisition_ids=row_noise_ids(X),

@@ -169,4 +169,7 @@ def test_sensor_file_not_utf8_says_what_to_do(tmp_path, monkeypatch, capsys):
     status, _, err = run_main(monkeypatch, capsys, "--sensor-file", str(profile), "sensors", "list")
     assert status == 2
     line = one_error_line(err)
-    assert line == f"error: {profile}: not UTF-8 text (byte 20); save it as a UTF-8 TOML file"
+    assert line == (
+        f"error: {profile}: not UTF-8 text (byte 20 = 0xff, line 2, column 10); "
+        f"save it as a UTF-8 TOML file"
+    )
