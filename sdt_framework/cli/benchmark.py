@@ -243,8 +243,7 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
         out_dir,
         yes,
         "benchmark",
-        "add --yes to start it, or lower --repeats or select fewer sensors, classifiers or "
-        "machines",
+        "lower --repeats or select fewer sensors, classifiers or machines",
     )
     preflight(plan, out_dir)
     claimed.append(True)
