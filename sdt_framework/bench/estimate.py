@@ -39,8 +39,11 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass, replace
+from pathlib import Path
 
+from ..data import sizes as host
 from ..data.recording import Recording
+from ..data.sizes import human_bytes
 from ..features import samples_for
 from ..specs import SensorSpec
 from ..stages import has_tolerances
@@ -53,6 +56,7 @@ __all__ = [
     "Estimate",
     "estimate",
     "estimate_like",
+    "unfit",
 ]
 
 #: A benchmark estimated to take longer than this needs ``--yes`` to start.
@@ -107,6 +111,12 @@ class Estimate:
             self.disk_bytes * count,
             self.fixed_bytes,
         )
+
+    def after(self, stored_runs: int) -> Estimate:
+        """This estimate once ``stored_runs`` of its runs are done (a resume skips them)."""
+        to_do = max(0, self.runs - stored_runs)
+        share = to_do / self.runs if self.runs else 1.0
+        return replace(self, runs_to_do=to_do, seconds=self.seconds * share)
 
     def line(self) -> str:
         """One line for the terminal: size and estimated time."""
@@ -201,3 +211,21 @@ def estimate_like(plan: Plan, sensor: SensorSpec, count: int) -> Estimate:
     number of design points before any point is built.
     """
     return estimate(replace(plan, sensors=[sensor])).scaled(count)
+
+
+def unfit(size: Estimate, out_dir: str | os.PathLike[str] | None = None) -> str | None:
+    """Why ``size`` cannot run on this machine (memory, or disk under ``out_dir``), or None."""
+    room = host.available_memory()  # looked up per call (tests replace it)
+    if size.memory_bytes > room:
+        return (
+            f"needs about {human_bytes(size.memory_bytes)} of memory, more than the "
+            f"{human_bytes(room)} available"
+        )
+    if out_dir is not None:
+        free = host.free_disk(Path(out_dir))
+        if size.disk_bytes > free:
+            return (
+                f"writes about {human_bytes(size.disk_bytes)}, more than the "
+                f"{human_bytes(free)} free on the disk of {out_dir}"
+            )
+    return None

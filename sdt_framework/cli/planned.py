@@ -41,20 +41,9 @@ def check_estimate(
     ``reduce`` what makes it smaller; a long one is told to ``add --yes to
     <verb> it, or <reduce>``.
     """
-    from ..data.sizes import available_memory, free_disk, human_bytes
-
-    room = available_memory()
-    if size.memory_bytes > room:
-        raise SDTError(
-            f"this {what} is {size.line()} and needs about {human_bytes(size.memory_bytes)} "
-            f"of memory, more than the {human_bytes(room)} available; {reduce}"
-        )
-    free = free_disk(out_dir)
-    if size.disk_bytes > free:
-        raise SDTError(
-            f"this {what} is {size.line()} and writes about {human_bytes(size.disk_bytes)}, "
-            f"more than the {human_bytes(free)} free on the disk of {out_dir}; {reduce}"
-        )
+    problem = sizes.unfit(size, out_dir)
+    if problem is not None:
+        raise SDTError(f"this {what} is {size.line()} and {problem}; {reduce}")
     if size.seconds > sizes.CONFIRM_ABOVE_SECONDS and not yes:  # looked up per call
         raise SDTError(f"this {what} is {size.line()}; add --yes to {verb} it, or {reduce}")
 
