@@ -7,11 +7,14 @@ import shlex
 import sys
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import typer
 
 from .common import console, err_console, registry, table, warn
+
+if TYPE_CHECKING:
+    from ..bench.estimate import Estimate
 
 
 def _example() -> str:
@@ -109,23 +112,25 @@ def _run(
     from ..bench.runner import preflight, run_benchmark
     from ..explore.output import write_explore
     from ..explore.run import explore_table, plan_explore
-    from .planned import check_size, print_skipped
+    from .planned import check_estimate, check_size, print_skipped, stored_runs
     from .progress import progress_bar
 
     reg = registry(ctx)
-    explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where)
+    stored = stored_runs(out_dir)
+    reduce = "shrink it (fewer levels or samples, --quick, fewer repeats or classifiers)"
+
+    def check_design(points: int, size: Estimate) -> None:
+        """Before the design is built: its points costed from the sweep file alone."""
+        what = f"sweep of {points:,} design points"
+        check_estimate(size.after(stored), out_dir, yes, what, reduce, verb="run")
+
+    explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where, check=check_design)
     plan = explore_plan.plan
-    size = check_size(
-        plan,
-        out_dir,
-        yes,
-        "sweep",
-        "add --yes to run it, or shrink it (--quick, fewer levels, repeats or classifiers)",
-    )
+    size = check_size(plan, out_dir, yes, "sweep", reduce, verb="run")
     preflight(plan, out_dir)
     for row in explore_plan.skipped.itertuples():
         err_console.print(f"skipped point {row.point}: {row.reason}", highlight=False)
-    print_skipped(plan)
+    print_skipped(plan, shown=set(explore_plan.skipped["point"]))
     console.print(
         f"{len(explore_plan.points)} points ({len(explore_plan.skipped)} skipped) + reference "
         f"and base on {len(plan.recordings)} recordings: {size.line()} -> {out_dir}",
