@@ -15,6 +15,7 @@ from pathlib import Path
 from pydantic import ValidationError
 
 from .errors import SpecFileError
+from .inputs import require_regular_file
 from .specs import SensorSpec
 
 __all__ = ["ENV_SENSOR_PATH", "load_sensor_file", "sensor_files_from_env"]
@@ -25,6 +26,7 @@ ENV_SENSOR_PATH = "SDT_SENSOR_PATH"
 def load_sensor_file(path: str | os.PathLike[str]) -> list[SensorSpec]:
     """Read and validate every sensor profile in one TOML file."""
     path = Path(path)
+    require_regular_file(path, "sensor file")
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except FileNotFoundError:

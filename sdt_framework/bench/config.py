@@ -18,6 +18,7 @@ import tomli_w
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
 from ..errors import SDTError, SpecFileError
+from ..inputs import require_regular_file
 from ..io import atomic_write_text
 
 __all__ = [
@@ -135,6 +136,7 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
     where = "command line"
     if path is not None:
         where = str(path)
+        require_regular_file(path, "config file")
         try:
             data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
         except FileNotFoundError:

@@ -74,9 +74,13 @@ def explore(
     if sweep_file is None:
         raise typer.BadParameter("give a sweep file, or --example to print one", param_hint="SWEEP")
     from ..bench.interrupt import watch_interrupts
+    from ..data.sizes import building
     from ..explore.sweep import load_sweep
+    from ..inputs import require_regular_file
 
-    sweep, protocol = load_sweep(sweep_file)
+    require_regular_file(sweep_file, "sweep file")
+    with building(f"reading the sweep file {sweep_file}", "shorten its ties and levels"):
+        sweep, protocol = load_sweep(sweep_file)
     given = {"data": data, "jobs": jobs, "backend": backend, "scheduler": scheduler}
     overrides: dict[str, Any] = {k: v for k, v in given.items() if v is not None}
     if quick:
@@ -110,6 +114,7 @@ def _run(
     """Plan the sweep, check its size and the folder, run it, write and report."""
     from ..bench.output import write_outputs
     from ..bench.runner import preflight, run_benchmark
+    from ..data.sizes import building
     from ..explore.output import write_explore
     from ..explore.run import explore_table, plan_explore
     from .planned import check_estimate, check_size, print_skipped, stored_runs
@@ -137,10 +142,13 @@ def _run(
         highlight=False,
         soft_wrap=True,
     )
-    with progress_bar() as progress:
+    smaller = (
+        "use fewer points, repeats or classifiers, shorter or fewer recordings, or fewer --jobs"
+    )
+    with building(f"running the sweep ({size.line()})", smaller), progress_bar() as progress:
         result = run_benchmark(plan, out_dir, progress, warn)
-    results = write_outputs(result, out_dir)
-    tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
+        results = write_outputs(result, out_dir)
+        tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
     if plan.config.report and not no_report:
         from ..report import write_report
 

@@ -22,7 +22,9 @@ import numpy as np
 import pandas as pd
 from scipy.stats import qmc
 
+from ..data.sizes import building
 from ..errors import SDTError
+from .size import design_size
 from .sweep import INTEGER_FIELDS, Axis, Sweep
 
 __all__ = ["axis_levels", "design_points", "salib_problem", "unit_column"]
@@ -87,8 +89,16 @@ def design_points(sweep: Sweep) -> pd.DataFrame:
     """One row per design point: the swept fields in physical units (and ``u_`` columns).
 
     Integer fields (bits, filter order) are rounded to whole numbers. Rows keep
-    the design's order (SALib's estimators rely on it).
+    the design's order (SALib's estimators rely on it). Should memory run out,
+    the error names the design and its size (check sizes first:
+    :func:`~sdt_framework.explore.size.design_size`).
     """
+    what = f"building the {sweep.design} design of {design_size(sweep):,} points"
+    with building(what, "use fewer levels, steps or samples"):
+        return _design_points(sweep)
+
+
+def _design_points(sweep: Sweep) -> pd.DataFrame:
     fields = list(sweep.axes)
     if sweep.design == "grid":
         combos = list(itertools.product(*(axis_levels(sweep.axes[f]) for f in fields)))

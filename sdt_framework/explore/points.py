@@ -21,6 +21,7 @@ from dataclasses import dataclass
 import pandas as pd
 from pydantic import ValidationError
 
+from ..data.sizes import building
 from ..specs import SensorSpec
 from .stage_axes import StageAxis, require
 from .stage_values import with_stage_values
@@ -103,6 +104,13 @@ def build_points(
     ``stage_axes``, from :func:`~sdt_framework.explore.stage_axes.check_stage_axes`.
     """
     stage_axes = require(sweep, stage_axes)
+    with building(f"building the {len(design):,} sweep points", "use fewer levels or samples"):
+        return _build(sweep, base, design, stage_axes)
+
+
+def _build(
+    sweep: Sweep, base: SensorSpec, design: pd.DataFrame, stage_axes: Mapping[str, StageAxis]
+) -> tuple[list[Point], pd.DataFrame]:
     fields = list(sweep.axes)
     rows = design[fields].to_dict("records")
     digits = 4

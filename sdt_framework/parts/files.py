@@ -14,6 +14,7 @@ from pathlib import Path
 from pydantic import ValidationError
 
 from ..errors import SpecFileError
+from ..inputs import require_regular_file
 from .model import PartSpec
 
 __all__ = ["load_part_file", "load_part_text"]
@@ -39,6 +40,7 @@ def load_part_text(text: str, where: str | os.PathLike[str]) -> PartSpec:
 def load_part_file(path: str | os.PathLike[str]) -> PartSpec:
     """Read and validate the part in one TOML file."""
     path = Path(path)
+    require_regular_file(path, "part file")
     try:
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:

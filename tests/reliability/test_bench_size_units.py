@@ -17,6 +17,16 @@ from sdt_framework.bench.estimate import BLOCK_BYTES, estimate
 from sdt_framework.bench.plan import plan_benchmark
 
 
+@pytest.fixture
+def no_run(monkeypatch):
+    """Starting the benchmark fails the test (so old code cannot grow memory here)."""
+
+    def refuse(*args, **kwargs):
+        pytest.fail("the benchmark started before its size was checked")
+
+    monkeypatch.setattr("sdt_framework.bench.runner.run_benchmark", refuse)
+
+
 def test_units_multiply_the_runs_draws_and_memory(registry):
     nominal = estimate(plan_benchmark(load_config(None, {"quick": True}), registry))
     drawn = estimate(plan_benchmark(load_config(None, {"quick": True, "units": 7}), registry))
@@ -56,7 +66,7 @@ def test_a_million_units_is_refused_before_the_folder_is_claimed(tmp_path):
     assert not out.exists()
 
 
-def test_many_units_that_fit_need_yes(sdt_main, monkeypatch, tmp_path):
+def test_many_units_that_fit_need_yes(sdt_main, monkeypatch, tmp_path, no_run):
     monkeypatch.setattr("sdt_framework.data.sizes.available_memory", lambda: 10**15)
     out = tmp_path / "out"
     code, _, err = sdt_main("benchmark", "--quick", "--units", "1000", "--out", str(out))
@@ -66,7 +76,7 @@ def test_many_units_that_fit_need_yes(sdt_main, monkeypatch, tmp_path):
     assert not out.exists()
 
 
-def test_a_full_disk_refuses_it(sdt_main, monkeypatch, tmp_path):
+def test_a_full_disk_refuses_it(sdt_main, monkeypatch, tmp_path, no_run):
     monkeypatch.setattr("sdt_framework.data.sizes.free_disk", lambda path: 1000)
     out = tmp_path / "out"
     code, _, err = sdt_main("benchmark", "--quick", "--units", "3", "--out", str(out))
