@@ -54,8 +54,10 @@ __all__ = [
     "FEATURE_SECONDS_PER_MSAMPLE",
     "RUN_SECONDS",
     "Estimate",
+    "disk_problem",
     "estimate",
     "estimate_like",
+    "memory_problem",
     "unfit",
 ]
 
@@ -215,17 +217,26 @@ def estimate_like(plan: Plan, sensor: SensorSpec, count: int) -> Estimate:
 
 def unfit(size: Estimate, out_dir: str | os.PathLike[str] | None = None) -> str | None:
     """Why ``size`` cannot run on this machine (memory, or disk under ``out_dir``), or None."""
+    return memory_problem(size) or (disk_problem(size, out_dir) if out_dir is not None else None)
+
+
+def memory_problem(size: Estimate) -> str | None:
+    """``needs about X of memory, more than the Y available``, or None if it fits."""
     room = host.available_memory()  # looked up per call (tests replace it)
-    if size.memory_bytes > room:
-        return (
-            f"needs about {human_bytes(size.memory_bytes)} of memory, more than the "
-            f"{human_bytes(room)} available"
-        )
-    if out_dir is not None:
-        free = host.free_disk(Path(out_dir))
-        if size.disk_bytes > free:
-            return (
-                f"writes about {human_bytes(size.disk_bytes)}, more than the "
-                f"{human_bytes(free)} free on the disk of {out_dir}"
-            )
-    return None
+    if size.memory_bytes <= room:
+        return None
+    return (
+        f"needs about {human_bytes(size.memory_bytes)} of memory, more than the "
+        f"{human_bytes(room)} available"
+    )
+
+
+def disk_problem(size: Estimate, out_dir: str | os.PathLike[str]) -> str | None:
+    """``writes about X, more than the Y free on the disk of <out_dir>``, or None if it fits."""
+    free = host.free_disk(Path(out_dir))
+    if size.disk_bytes <= free:
+        return None
+    return (
+        f"writes about {human_bytes(size.disk_bytes)}, more than the {human_bytes(free)} "
+        f"free on the disk of {out_dir}"
+    )

@@ -41,9 +41,15 @@ def check_estimate(
     ``reduce`` what makes it smaller; a long one is told to ``add --yes to
     <verb> it, or <reduce>``.
     """
-    problem = sizes.unfit(size, out_dir)
+    problem = sizes.memory_problem(size)
     if problem is not None:
         raise SDTError(f"this {what} is {size.line()} and {problem}; {reduce}")
+    problem = sizes.disk_problem(size, out_dir)
+    if problem is not None:
+        raise SDTError(
+            f"this {what} is {size.line()} and {problem}; free some space or choose "
+            f"another --out, or {reduce}"
+        )
     if size.seconds > sizes.CONFIRM_ABOVE_SECONDS and not yes:  # looked up per call
         raise SDTError(f"this {what} is {size.line()}; add --yes to {verb} it, or {reduce}")
 

@@ -128,14 +128,20 @@ def available_memory() -> int:
 
 
 def free_disk(path: Path) -> int:
-    """Free bytes on the file system that will hold ``path`` (its nearest existing folder)."""
+    """Free bytes on the file system that will hold ``path`` (its nearest existing folder).
+
+    Unknown (a huge number) when it cannot be asked, or for a pseudo file
+    system of size 0, so that the write's own error names the real cause.
+    """
     folder = Path(os.path.abspath(path))
     while not folder.exists() and folder != folder.parent:
         folder = folder.parent
     try:
-        return shutil.disk_usage(folder).free
+        usage = shutil.disk_usage(folder)
     except OSError:
         return 2**63 - 1  # unknown: the write itself reports a full disk
+    # a file system of no size (sysfs, procfs) is no disk: writing there fails on its own
+    return usage.free if usage.total else 2**63 - 1
 
 
 def synth_cost(
