@@ -101,11 +101,13 @@ def design_points(sweep: Sweep) -> pd.DataFrame:
 def _design_points(sweep: Sweep) -> pd.DataFrame:
     fields = list(sweep.axes)
     if sweep.design == "grid":
-        combos = list(itertools.product(*(axis_levels(sweep.axes[f]) for f in fields)))
-        frame = pd.DataFrame(combos, columns=fields)
-        for f in fields:
-            levels = axis_levels(sweep.axes[f])
-            frame[unit_column(f)] = [levels.index(v) / max(1, len(levels) - 1) for v in frame[f]]
+        levels = [np.asarray(axis_levels(sweep.axes[f]), dtype=float) for f in fields]
+        ranges = (range(len(values)) for values in levels)
+        combos = np.array(list(itertools.product(*ranges)), dtype=np.intp).reshape(-1, len(fields))
+        # by position, not by value: a level of NaN equals no level (it is skipped as a point)
+        frame = pd.DataFrame({f: levels[i][combos[:, i]] for i, f in enumerate(fields)})
+        for i, f in enumerate(fields):
+            frame[unit_column(f)] = combos[:, i] / max(1, len(levels[i]) - 1)
     else:
         unit = _unit_design(sweep)
         frame = pd.DataFrame(
@@ -114,7 +116,7 @@ def _design_points(sweep: Sweep) -> pd.DataFrame:
         for i, f in enumerate(fields):
             frame[unit_column(f)] = unit[:, i]
     for f in fields:
-        if f in INTEGER_FIELDS:
+        if f in INTEGER_FIELDS and np.isfinite(frame[f]).all():  # else: skipped as points
             frame[f] = frame[f].round().astype(int)
     frame.insert(0, "design_index", np.arange(len(frame)))
     return frame

@@ -122,6 +122,7 @@ def _build(
     for index, row in zip(design["design_index"], rows, strict=True):
         name = point_name(base.name, row, digits)
         try:
+            _finite(row)
             values = _resolved(sweep, base, row)
             _finite(values)
             stages = with_stage_values(content["stages"], values, stage_axes)

@@ -11,6 +11,7 @@ new.
 from __future__ import annotations
 
 import textwrap
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -118,3 +119,13 @@ def test_a_long_design_needs_yes_before_it_is_built(sdt_main, tmp_path, no_desig
 def test_the_size_is_the_built_designs_length(table, expected):
     sweep = parse_sweep({"base": "adxl345", **table})
     assert design_size(sweep) == expected == len(design_points(sweep))
+
+
+def test_the_python_api_refuses_it_too(no_design):
+    from sdt_framework import build_registry
+    from sdt_framework.errors import SDTError
+    from sdt_framework.explore.run import plan_explore
+
+    sweep = parse_sweep(tomllib.loads(GRID)["sweep"])
+    with pytest.raises(SDTError, match=r"^a sweep of 100,000,000 design points needs about "):
+        plan_explore(sweep, {}, {"quick": True}, build_registry())

@@ -56,3 +56,29 @@ def test_every_skipped_point_is_written_with_its_reason(sdt_main, tmp_path):
     assert err.count("skipped point ") == 5 and "skipped sensor adxl345~" not in err
     results = pd.read_csv(out / "results.csv")
     assert set(results["sensor"]) == {"wilcoxon-786b10", "adxl345", "adxl345~rate=800,range=16"}
+
+
+def test_non_finite_levels_are_skipped_points_not_tracebacks(registry):
+    from sdt_framework.explore.design import design_points
+    from sdt_framework.explore.points import build_points
+    from sdt_framework.explore.sweep import parse_sweep
+
+    sweep = parse_sweep(
+        {
+            "base": "adxl345",
+            "axes": {
+                "sampling_rate_hz": {"levels": [float("nan"), 1600]},
+                "adc_bits": {"levels": [10, float("inf")]},
+            },
+            "ties": {"digital_cutoff_hz": "0.4 * rate"},
+        }
+    )
+    design = design_points(sweep)  # before: ValueError (nan is not in list), IntCastingNaNError
+    assert list(design["u_sampling_rate_hz"]) == [0, 0, 1, 1]  # by position, NaN included
+    points, skipped = build_points(sweep, registry.sensor("adxl345"), design)
+    assert [p.spec.name for p in points] == ["adxl345~rate=1600,bits=10"]
+    assert list(skipped["reason"]) == [
+        "sampling_rate_hz: nan is not a finite number",
+        "sampling_rate_hz: nan is not a finite number",
+        "adc_bits: inf is not a finite number",
+    ]
