@@ -26,7 +26,9 @@ on ``sdt benchmark --quick --machines Motor-2 --classifiers lr --jobs 1`` with
 acquisitions (444 and 586 MB for units 2 and 8: 630 B per row once the blocks
 are counted), and with one 200 s and one 40 s recording (1235 and 421 MB: 254 B
 per input sample while it runs through a chain); the disk constants from the
-folders those runs wrote.
+folders those runs wrote. On those runs the estimate is 5 to 14 % above the
+measured peak (446 MB for 391 at 20 repeats, 552 for 495 at 16 units, 1298 for
+1235 with the 200 s recording).
 
 The time constants are single-thread CPU times measured on the reference machine
 (2 vCPU AMD EPYC, Python 3.11, scikit-learn 1.9, xgboost 3.2) by
