@@ -25,7 +25,7 @@ ENV_SENSOR_PATH = "SDT_SENSOR_PATH"
 def load_sensor_file(path: str | os.PathLike[str]) -> list[SensorSpec]:
     """Read and validate every sensor profile in one TOML file."""
     path = Path(path)
-    data = read_toml(path)
+    data = read_toml(path, what="sensor file")
     tables = data.get("sensor", [data])
     if isinstance(tables, dict):
         tables = [tables]

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from .errors import SpecFileError
+from .inputs import require_regular_file
 
 __all__ = ["MAX_BYTES", "MAX_DEPTH", "parse_toml", "read_toml"]
 
@@ -36,10 +37,18 @@ _WIDE_BOMS = {
 
 
 def read_toml(
-    path: str | os.PathLike[str], *, missing: str = "file not found; check the path"
+    path: str | os.PathLike[str],
+    *,
+    what: str = "file",
+    missing: str = "file not found; check the path",
 ) -> dict[str, Any]:
-    """The parsed TOML file at ``path``; ``missing`` is the advice when it does not exist."""
+    """The parsed TOML file at ``path``; ``missing`` is the advice when it does not exist.
+
+    ``what`` names the file's role (``config file``, ``sensor file``) when ``path``
+    is a device or a pipe, which is refused unread.
+    """
     path = Path(path)
+    require_regular_file(path, what)
     try:
         with path.open("rb") as handle:
             raw = handle.read(MAX_BYTES + 1)

@@ -139,7 +139,7 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
     where = "command line"
     if path is not None:
         where = str(path)
-        data = read_toml(path, missing="config file not found; check the path")
+        data = read_toml(path, what="config file", missing="config file not found; check the path")
         if "benchmark" in data:
             data = data["benchmark"]
             if not isinstance(data, dict):

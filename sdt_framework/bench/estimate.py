@@ -12,9 +12,25 @@ The estimate is deliberately simple (and printed as an estimate):
   built-in;
 - the sum is divided by the processes that can run at once,
   ``min(--jobs, CPU cores)``; runs already stored in the results folder are
-  not counted.
+  not counted;
+- ``--units`` multiplies the runs, and the draws of a sensor with tolerances
+  (one without shares unit 0's);
+- memory: the process itself, plus per feature block (one recording x sensor
+  x unit x repetition), per feature row (window) and per run, all held until
+  the results are written, plus each process's chain run on the largest
+  recording; disk: one run file per run and ``features.parquet``.
 
-The constants are single-thread CPU times measured on the reference machine
+The memory constants are peak resident sizes measured with ``/usr/bin/time -v``
+on ``sdt benchmark --quick --machines Motor-2 --classifiers lr --jobs 1`` with
+``--units`` 2, 8 and 16 (289, 379 and 495 MB: 33 kB per block) and with 40 s
+acquisitions (444 and 586 MB for units 2 and 8: 630 B per row once the blocks
+are counted), and with one 200 s and one 40 s recording (1235 and 421 MB: 254 B
+per input sample while it runs through a chain); the disk constants from the
+folders those runs wrote. On those runs the estimate is 5 to 14 % above the
+measured peak (446 MB for 391 at 20 repeats, 552 for 495 at 16 units, 1298 for
+1235 with the 200 s recording).
+
+The time constants are single-thread CPU times measured on the reference machine
 (2 vCPU AMD EPYC, Python 3.11, scikit-learn 1.9, xgboost 3.2) by
 ``python benchmarks/bench_estimate.py``, which also prints how far the
 estimate of the ``--quick`` benchmark is from its measured time. Feature-cache
@@ -24,11 +40,15 @@ hits are not subtracted, so the estimate errs on the long side.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from pathlib import Path
 
+from ..data import sizes as host
 from ..data.recording import Recording
+from ..data.sizes import human_bytes
 from ..features import samples_for
 from ..specs import SensorSpec
+from ..stages import has_tolerances
 from .plan import Plan
 
 __all__ = [
@@ -36,7 +56,11 @@ __all__ = [
     "FEATURE_SECONDS_PER_MSAMPLE",
     "RUN_SECONDS",
     "Estimate",
+    "disk_problem",
     "estimate",
+    "estimate_like",
+    "memory_problem",
+    "unfit",
 ]
 
 #: A benchmark estimated to take longer than this needs ``--yes`` to start.
@@ -51,6 +75,18 @@ RUN_SECONDS: dict[str, tuple[float, float]] = {
     "xgb": (0.03, 0.0006),
     "mlp": (0.07, 0.0005),
 }
+#: resident size of the process before any data (interpreter, numpy, pandas, sklearn)
+PROCESS_BYTES = 250_000_000
+#: peak bytes per feature block (recording x sensor x unit x repetition), per
+#: feature row (one window) and per finished run kept until the results are written
+BLOCK_BYTES = 34_000
+ROW_BYTES = 700
+RUN_BYTES = 20_000
+#: peak bytes per input sample of the recording a process is running through a chain
+CHAIN_BYTES_PER_SAMPLE = 260
+#: bytes on disk per run file and per row of features.parquet (measured 4.7 kB, 36 B)
+RUN_FILE_BYTES = 6_000
+ROW_FILE_BYTES = 40
 
 
 @dataclass(frozen=True)
@@ -62,6 +98,29 @@ class Estimate:
     feature_draws: int
     seconds: float
     workers: int
+    memory_bytes: int = PROCESS_BYTES
+    disk_bytes: int = 0
+    #: the part of ``memory_bytes`` that does not grow with the work (processes, chains)
+    fixed_bytes: int = PROCESS_BYTES
+
+    def scaled(self, count: int) -> Estimate:
+        """The estimate of ``count`` times this work (the processes counted once)."""
+        return Estimate(
+            self.runs * count,
+            self.runs_to_do * count,
+            self.feature_draws * count,
+            self.seconds * count,
+            self.workers,
+            self.fixed_bytes + (self.memory_bytes - self.fixed_bytes) * count,
+            self.disk_bytes * count,
+            self.fixed_bytes,
+        )
+
+    def after(self, stored_runs: int) -> Estimate:
+        """This estimate once ``stored_runs`` of its runs are done (a resume skips them)."""
+        to_do = max(0, self.runs - stored_runs)
+        share = to_do / self.runs if self.runs else 1.0
+        return replace(self, runs_to_do=to_do, seconds=self.seconds * share)
 
     def line(self) -> str:
         """One line for the terminal: size and estimated time."""
@@ -92,22 +151,32 @@ def _windows(recording: Recording, sensor: SensorSpec, window_s: float, settle_s
     return recording.n_acquisitions * max(0, usable // samples_for(window_s, rate))
 
 
-def _draws(sensor: SensorSpec, repeats: int) -> int:
+def _draws(sensor: SensorSpec, repeats: int, units: int | None) -> int:
     noisy = sensor.inject_noise and sensor.noise_density_ug_rthz != 0
-    return repeats if noisy else 1
+    drawn = units if units is not None and has_tolerances(sensor) else 1
+    return (repeats if noisy else 1) * drawn
 
 
 def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
-    """Size and estimated wall time of ``plan``; ``stored_runs`` are already done."""
+    """Size, estimated wall time, peak memory and disk of ``plan``; ``stored_runs`` are done.
+
+    Pure arithmetic on the plan's sizes: nothing is allocated per unit, run or
+    window, so a plan of 10^12 runs is estimated as fast as a small one.
+    """
     config = plan.config
+    units = config.units or 1
     feature_seconds = 0.0
     draws = 0
+    rows = 0
     for recording in plan.recordings:
         samples = recording.n_acquisitions * recording.samples_per_acquisition
         for sensor in plan.sensors:
-            n = _draws(sensor, config.repeats)
+            n = _draws(sensor, config.repeats, config.units)
             draws += n
             feature_seconds += n * samples / 1e6 * FEATURE_SECONDS_PER_MSAMPLE
+            rows += _windows(recording, sensor, config.window_s, config.settle_s)
+    blocks = len(plan.recordings) * len(plan.sensors) * config.repeats * units
+    rows *= config.repeats * units
     slowest = max(RUN_SECONDS.values(), key=lambda ab: ab[0] + 1000 * ab[1])
     by_run = {(r.machine, r.run): [] for r in plan.recordings}
     for recording in plan.recordings:
@@ -123,10 +192,53 @@ def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
             n_train = sum(_windows(r, sensor, config.window_s, config.settle_s) for r in members)
             for clf in plan.classifiers:
                 a, b = RUN_SECONDS.get(clf.name, slowest)
-                run_seconds += config.repeats * (a + b * n_train)
-                runs += config.repeats
+                run_seconds += config.repeats * units * (a + b * n_train)
+                runs += config.repeats * units
     to_do = max(0, runs - stored_runs)
     if runs:
         run_seconds *= to_do / runs
     workers = max(1, min(config.n_jobs(), os.cpu_count() or 1))
-    return Estimate(runs, to_do, draws, (feature_seconds + run_seconds) / workers, workers)
+    largest = max(
+        (r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings), default=0
+    )
+    fixed = PROCESS_BYTES + workers * CHAIN_BYTES_PER_SAMPLE * largest
+    memory = fixed + BLOCK_BYTES * blocks + ROW_BYTES * rows + RUN_BYTES * runs
+    disk = RUN_FILE_BYTES * to_do + ROW_FILE_BYTES * rows
+    seconds = (feature_seconds + run_seconds) / workers
+    return Estimate(runs, to_do, draws, seconds, workers, memory, disk, fixed)
+
+
+def estimate_like(plan: Plan, sensor: SensorSpec, count: int) -> Estimate:
+    """``plan`` run on ``count`` sensors each costing what ``sensor`` costs.
+
+    For a sweep whose sensors do not exist yet: its size is known from the
+    number of design points before any point is built.
+    """
+    return estimate(replace(plan, sensors=[sensor])).scaled(count)
+
+
+def unfit(size: Estimate, out_dir: str | os.PathLike[str] | None = None) -> str | None:
+    """Why ``size`` cannot run on this machine (memory, or disk under ``out_dir``), or None."""
+    return memory_problem(size) or (disk_problem(size, out_dir) if out_dir is not None else None)
+
+
+def memory_problem(size: Estimate) -> str | None:
+    """``needs about X of memory, more than the Y available``, or None if it fits."""
+    room = host.available_memory()  # looked up per call (tests replace it)
+    if size.memory_bytes <= room:
+        return None
+    return (
+        f"needs about {human_bytes(size.memory_bytes)} of memory, more than the "
+        f"{human_bytes(room)} available"
+    )
+
+
+def disk_problem(size: Estimate, out_dir: str | os.PathLike[str]) -> str | None:
+    """``writes about X, more than the Y free on the disk of <out_dir>``, or None if it fits."""
+    free = host.free_disk(Path(out_dir))
+    if size.disk_bytes <= free:
+        return None
+    return (
+        f"writes about {human_bytes(size.disk_bytes)}, more than the {human_bytes(free)} "
+        f"free on the disk of {out_dir}"
+    )

@@ -27,6 +27,7 @@ from pathlib import Path
 import pandas as pd
 
 from ..errors import SDTError
+from ..inputs import require_regular_file
 
 __all__ = ["COLUMNS", "Run", "check_allocation", "load_allocation", "rule_allocation"]
 
@@ -120,6 +121,7 @@ def load_allocation(path: str | os.PathLike[str], runs: Iterable[Run]) -> pd.Dat
     naming the file (and the entry or row).
     """
     path = Path(path)
+    require_regular_file(path, "allocation file")
     toml = path.suffix.lower() == ".toml"
     try:
         if toml:

@@ -21,6 +21,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SDTError
+from ..inputs import require_regular_file
 from ..io import atomic_path
 
 __all__ = ["SUFFIXES", "UNITS", "LoadedSignal", "load_signal", "save_array", "to_g"]
@@ -52,6 +53,7 @@ def load_signal(path: str | os.PathLike[str]) -> LoadedSignal:
     if path.is_dir():
         raise SDTError(f"{path}: is a folder; give the signal file")
     suffix = _suffix(path)
+    require_regular_file(path, "signal file")
     if not path.is_file():
         raise SDTError(f"{path}: no such file; check the path")
     if suffix == ".csv":

@@ -249,8 +249,7 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
         out_dir,
         yes,
         "benchmark",
-        "add --yes to start it, or lower --repeats or select fewer sensors, classifiers or "
-        "machines",
+        "lower --repeats or select fewer sensors, classifiers or machines",
     )
     preflight(plan, out_dir)
     claimed.append(True)
@@ -264,9 +263,13 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
     )
     if size.seconds > CONFIRM_ABOVE_SECONDS:
         _say("note:", "yellow", f"this benchmark is {size.line()}")
-    with progress_bar() as progress:
-        result = run_benchmark(plan, out_dir, progress, warn)
-    results = write_outputs(result, out_dir)
+    from ..data.sizes import building
+
+    reduce = "process less data at once (shorter or fewer recordings, fewer --jobs)"
+    with building(f"running the benchmark ({size.line()})", reduce):
+        with progress_bar() as progress:
+            result = run_benchmark(plan, out_dir, progress, warn)
+        results = write_outputs(result, out_dir)
     _print_table4(results, [s.name for s in plan.sensors])
     if config.report:
         from ..report import write_report  # the report layer sits above the benchmark

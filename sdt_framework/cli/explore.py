@@ -7,11 +7,14 @@ import shlex
 import sys
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import typer
 
 from .common import console, err_console, registry, table, warn
+
+if TYPE_CHECKING:
+    from ..bench.estimate import Estimate
 
 
 def _example() -> str:
@@ -71,9 +74,13 @@ def explore(
     if sweep_file is None:
         raise typer.BadParameter("give a sweep file, or --example to print one", param_hint="SWEEP")
     from ..bench.interrupt import watch_interrupts
+    from ..data.sizes import building
     from ..explore.sweep import load_sweep
+    from ..inputs import require_regular_file
 
-    sweep, protocol = load_sweep(sweep_file)
+    require_regular_file(sweep_file, "sweep file")
+    with building(f"reading the sweep file {sweep_file}", "shorten its ties and levels"):
+        sweep, protocol = load_sweep(sweep_file)
     given = {"data": data, "jobs": jobs, "backend": backend, "scheduler": scheduler}
     overrides: dict[str, Any] = {k: v for k, v in given.items() if v is not None}
     if quick:
@@ -110,35 +117,41 @@ def _run(
     """Plan the sweep, check its size and the folder, run it, write and report."""
     from ..bench.output import write_outputs
     from ..bench.runner import preflight, run_benchmark
+    from ..data.sizes import building
     from ..explore.output import write_explore
     from ..explore.run import explore_table, plan_explore
-    from .planned import check_size, print_skipped
+    from .planned import check_estimate, check_size, print_skipped, stored_runs
     from .progress import progress_bar
 
     reg = registry(ctx)
-    explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where)
+    stored = stored_runs(out_dir)
+    reduce = "shrink it (fewer levels or samples, --quick, fewer repeats or classifiers)"
+
+    def check_design(points: int, size: Estimate) -> None:
+        """Before the design is built: its points costed from the sweep file alone."""
+        what = f"sweep of {points:,} design points"
+        check_estimate(size.after(stored), out_dir, yes, what, reduce, verb="run")
+
+    explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where, check=check_design)
     plan = explore_plan.plan
-    size = check_size(
-        plan,
-        out_dir,
-        yes,
-        "sweep",
-        "add --yes to run it, or shrink it (--quick, fewer levels, repeats or classifiers)",
-    )
+    size = check_size(plan, out_dir, yes, "sweep", reduce, verb="run")
     preflight(plan, out_dir)
     for row in explore_plan.skipped.itertuples():
         err_console.print(f"skipped point {row.point}: {row.reason}", highlight=False)
-    print_skipped(plan)
+    print_skipped(plan, shown=set(explore_plan.skipped["point"]))
     console.print(
         f"{len(explore_plan.points)} points ({len(explore_plan.skipped)} skipped) + reference "
         f"and base on {len(plan.recordings)} recordings: {size.line()} -> {out_dir}",
         highlight=False,
         soft_wrap=True,
     )
-    with progress_bar() as progress:
+    smaller = (
+        "use fewer points, repeats or classifiers, shorter or fewer recordings, or fewer --jobs"
+    )
+    with building(f"running the sweep ({size.line()})", smaller), progress_bar() as progress:
         result = run_benchmark(plan, out_dir, progress, warn)
-    results = write_outputs(result, out_dir)
-    tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
+        results = write_outputs(result, out_dir)
+        tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
     if plan.config.report and not no_report:
         from ..report import write_report
 

@@ -8,7 +8,9 @@ for a problem the user can act on.
   with it, or adds it as a note to the KeyboardInterrupt it re-raises.
 - The environment's errors, :class:`OSError` (permission denied, read-only or full disk,
   a folder where a file is expected, a missing folder, HOME unusable) and
-  :class:`MemoryError`: one line naming the path, the cause and what to do, exit 2.
+  :class:`MemoryError`: one line naming the path (for memory: the step that was
+  building, see :func:`sdt_framework.data.sizes.building`), the cause and what to
+  do, exit 2.
   ``SDT_DEBUG=1`` shows their traceback instead.
 - Anything else is a bug and keeps its traceback.
 """
@@ -64,11 +66,22 @@ def os_error_line(exc: OSError) -> str:
 
 
 def memory_error_line(exc: MemoryError) -> str:
-    """One line for a MemoryError (numpy's says how much and which shape)."""
+    """One line for a MemoryError: what was being built when it ran out, and what to do.
+
+    The step is named by :func:`~sdt_framework.data.sizes.building` where it
+    was entered (the sweep design, its points, the benchmark's features); a
+    MemoryError from elsewhere blames no particular input.
+    """
+    from ..data.sizes import memory_cause
+
     detail = one_line(exc, 200) or "MemoryError"
+    cause = memory_cause(exc)
+    if cause is not None:
+        what, reduce = cause
+        return f"out of memory while {what} ({detail}); {reduce}, or use a machine with more memory"
     return (
-        f"out of memory: {detail}; process less data at once (shorter or fewer recordings, "
-        f"fewer --jobs) or use a machine with more memory"
+        f"out of memory ({detail}); ask for less data at once (check the sizes asked for and "
+        f"the files given) or use a machine with more memory"
     )
 
 

@@ -61,6 +61,9 @@ def _load_npy(path: Path) -> Any:
 
     if path.suffix.lower() != ".npy":
         raise SDTError(f"{path}: input must be a .npy file (1-D, or 2-D rows = acquisitions)")
+    from ..inputs import require_regular_file
+
+    require_regular_file(path, "signal file")
     if not path.is_file():
         what = "is a folder; give the signal file" if path.is_dir() else "no such file"
         raise SDTError(f"{path}: {what}; check the path")

@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SDTError
+from ..inputs import not_regular
 from .manifest_table import ManifestRow, read_manifest_rows
 from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
 from .signal_files import read_signal, signal_shape
@@ -165,7 +166,9 @@ def open_manifest(
     notes: list[str] = []
     for fields in all_fields:
         if not fields["file"].is_file():
+            kind = not_regular(fields["file"])
             what = "is a folder" if fields["file"].is_dir() else "not found"
+            what = f"is not a regular file ({kind})" if kind else what
             skipped.append(
                 Skipped(str(fields["file"]), f"file {what} (manifest {manifest} {fields['where']})")
             )

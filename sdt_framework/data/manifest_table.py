@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import SDTError
+from ..inputs import require_regular_file
 from .tokens import brief, quote
 
 __all__ = ["ManifestRow", "read_manifest_rows"]
@@ -97,6 +98,7 @@ def read_manifest_rows(path: Path) -> tuple[list[str], list[ManifestRow]]:
         Missing, unreadable, empty, not UTF-8, ragged, a repeated column name,
         or a header without rows; the message names the file and the line.
     """
+    require_regular_file(path, "manifest")
     if not path.is_file():
         what = "is a folder" if path.is_dir() else "not found"
         raise SDTError(f"manifest {path} {what}; give the path of a .csv or .parquet file")

@@ -18,6 +18,7 @@ import pyarrow as pa
 import pyarrow.csv as pacsv
 
 from ..errors import SDTError
+from ..inputs import require_regular_file
 from ..io import atomic_path
 from .recording import Dataset, Recording
 
@@ -50,6 +51,7 @@ def open_dataset(registry: Any, path_or_name: str | os.PathLike[str], **options:
             return registry.dataset("nln-emp").loader(path, **options)
         raise SDTError(f"{path}: a folder without 'Vibration/'; expected an NLN-EMP root")
     if path.suffix.lower() in {".csv", ".parquet"}:
+        require_regular_file(path, "manifest")
         if not path.is_file():
             raise SDTError(f"manifest {path} not found")
         return registry.dataset("manifest").loader(path, **options)

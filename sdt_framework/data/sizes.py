@@ -17,17 +17,21 @@ refuses or asks for ``--yes`` before allocating (the policy is in
 
 from __future__ import annotations
 
+import contextlib
 import os
 import shutil
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = [
     "Cost",
     "available_memory",
+    "building",
     "free_disk",
     "human_bytes",
     "human_seconds",
+    "memory_cause",
     "synth_cost",
 ]
 
@@ -38,6 +42,31 @@ CSV_BYTES_PER_VALUE = 10
 CSV_BYTES_PER_ROW = 8
 #: generated-and-written samples per second (measured 1.8 M/s, rounded down)
 SYNTH_SAMPLES_PER_S = 1.5e6
+
+
+_CAUSE = "sdt_building"  # attribute of a MemoryError: (what was being built, what to do)
+
+
+@contextlib.contextmanager
+def building(what: str, reduce: str) -> Iterator[None]:
+    """Name what is being built, should memory run out inside (``memory_cause`` reads it).
+
+    ``what`` completes "out of memory while ..." (``"building the sweep design
+    of 40 points"``); ``reduce`` says what makes it smaller. The innermost
+    ``building`` names it: the most precise cause wins.
+    """
+    try:
+        yield
+    except MemoryError as exc:
+        if getattr(exc, _CAUSE, None) is None:
+            setattr(exc, _CAUSE, (what, reduce))
+        raise
+
+
+def memory_cause(exc: MemoryError) -> tuple[str, str] | None:
+    """(what was being built, what to do) when memory ran out, if a ``building`` said."""
+    cause = getattr(exc, _CAUSE, None)
+    return cause if isinstance(cause, tuple) else None
 
 
 @dataclass(frozen=True)
@@ -99,14 +128,20 @@ def available_memory() -> int:
 
 
 def free_disk(path: Path) -> int:
-    """Free bytes on the file system that will hold ``path`` (its nearest existing folder)."""
+    """Free bytes on the file system that will hold ``path`` (its nearest existing folder).
+
+    Unknown (a huge number) when it cannot be asked, or for a pseudo file
+    system of size 0, so that the write's own error names the real cause.
+    """
     folder = Path(os.path.abspath(path))
     while not folder.exists() and folder != folder.parent:
         folder = folder.parent
     try:
-        return shutil.disk_usage(folder).free
+        usage = shutil.disk_usage(folder)
     except OSError:
         return 2**63 - 1  # unknown: the write itself reports a full disk
+    # a file system of no size (sysfs, procfs) is no disk: writing there fails on its own
+    return usage.free if usage.total else 2**63 - 1
 
 
 def synth_cost(

@@ -22,7 +22,9 @@ import numpy as np
 import pandas as pd
 from scipy.stats import qmc
 
+from ..data.sizes import building
 from ..errors import SDTError
+from .size import design_size
 from .sweep import INTEGER_FIELDS, Axis, Sweep
 
 __all__ = ["axis_levels", "design_points", "salib_problem", "unit_column"]
@@ -87,15 +89,25 @@ def design_points(sweep: Sweep) -> pd.DataFrame:
     """One row per design point: the swept fields in physical units (and ``u_`` columns).
 
     Integer fields (bits, filter order) are rounded to whole numbers. Rows keep
-    the design's order (SALib's estimators rely on it).
+    the design's order (SALib's estimators rely on it). Should memory run out,
+    the error names the design and its size (check sizes first:
+    :func:`~sdt_framework.explore.size.design_size`).
     """
+    what = f"building the {sweep.design} design of {design_size(sweep):,} points"
+    with building(what, "use fewer levels, steps or samples"):
+        return _design_points(sweep)
+
+
+def _design_points(sweep: Sweep) -> pd.DataFrame:
     fields = list(sweep.axes)
     if sweep.design == "grid":
-        combos = list(itertools.product(*(axis_levels(sweep.axes[f]) for f in fields)))
-        frame = pd.DataFrame(combos, columns=fields)
-        for f in fields:
-            levels = axis_levels(sweep.axes[f])
-            frame[unit_column(f)] = [levels.index(v) / max(1, len(levels) - 1) for v in frame[f]]
+        levels = [np.asarray(axis_levels(sweep.axes[f]), dtype=float) for f in fields]
+        ranges = (range(len(values)) for values in levels)
+        combos = np.array(list(itertools.product(*ranges)), dtype=np.intp).reshape(-1, len(fields))
+        # by position, not by value: a level of NaN equals no level (it is skipped as a point)
+        frame = pd.DataFrame({f: levels[i][combos[:, i]] for i, f in enumerate(fields)})
+        for i, f in enumerate(fields):
+            frame[unit_column(f)] = combos[:, i] / max(1, len(levels[i]) - 1)
     else:
         unit = _unit_design(sweep)
         frame = pd.DataFrame(
@@ -104,7 +116,7 @@ def design_points(sweep: Sweep) -> pd.DataFrame:
         for i, f in enumerate(fields):
             frame[unit_column(f)] = unit[:, i]
     for f in fields:
-        if f in INTEGER_FIELDS:
+        if f in INTEGER_FIELDS and np.isfinite(frame[f]).all():  # else: skipped as points
             frame[f] = frame[f].round().astype(int)
     frame.insert(0, "design_index", np.arange(len(frame)))
     return frame

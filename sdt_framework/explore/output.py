@@ -3,7 +3,7 @@
 explore.parquet        one row per point x machine x scenario x classifier x repetition,
                        every swept parameter a column (reference/base rows included)
 points.csv             every evaluated point: name, design index, values, cost
-skipped_points.csv     design points the spec rejected, with the reason
+skipped_points.csv     design points not evaluated (invalid, not finite, too fast), with reason
 main_effects.csv       mean Macro-F1 per parameter level and cell, with 95 % CIs
 sensitivity.csv        ANOVA shares (grid) or SALib indices (morris/sobol/lhs), ranked
 min_spec.csv           least demanding level of each parameter meeting the target

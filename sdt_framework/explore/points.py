@@ -2,27 +2,33 @@
 
 Each point goes through :class:`~sdt_framework.specs.SensorSpec` validation, so
 a combination the chain cannot run (a digital cutoff at or above the new
-Nyquist, say) is not evaluated: it is returned with the reason, to be written
-to ``skipped_points.csv``, and the sweep goes on. Stage-parameter values
+Nyquist, say, or a value that is not a finite number, such as a level of
+``inf``) is not evaluated: it is returned with the reason, to be written to
+``skipped_points.csv``, and the sweep goes on. A valid point the data cannot
+feed (a rate above the recordings') is moved there too once the benchmark is
+planned (:func:`left_out`), so every design point is in ``points.csv`` or in
+``skipped_points.csv``. Stage-parameter values
 (``"nonlinearity.second_pct_fs"``) go into the profile's stage list and are
 checked by the stage's own parameter model the same way.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import dataclass
 
 import pandas as pd
 from pydantic import ValidationError
 
+from ..data.sizes import building
 from ..specs import SensorSpec
 from .stage_axes import StageAxis, require
 from .stage_values import with_stage_values
 from .sweep import INTEGER_FIELDS, SHORT_NAMES, Sweep
 from .ties import evaluate_tie
 
-__all__ = ["Point", "build_points", "point_name"]
+__all__ = ["Point", "build_points", "left_out", "point_name"]
 
 
 @dataclass(frozen=True)
@@ -78,6 +84,13 @@ def _resolved(sweep: Sweep, base: SensorSpec, row: dict[str, float]) -> dict[str
     return values
 
 
+def _finite(values: Mapping[str, float]) -> None:
+    """A value of ``inf`` or NaN (a level, or a tie's result) is no specification."""
+    for key, value in values.items():
+        if not math.isfinite(value):
+            raise ValueError(f"{key}: {value:g} is not a finite number")
+
+
 def build_points(
     sweep: Sweep,
     base: SensorSpec,
@@ -91,6 +104,13 @@ def build_points(
     ``stage_axes``, from :func:`~sdt_framework.explore.stage_axes.check_stage_axes`.
     """
     stage_axes = require(sweep, stage_axes)
+    with building(f"building the {len(design):,} sweep points", "use fewer levels or samples"):
+        return _build(sweep, base, design, stage_axes)
+
+
+def _build(
+    sweep: Sweep, base: SensorSpec, design: pd.DataFrame, stage_axes: Mapping[str, StageAxis]
+) -> tuple[list[Point], pd.DataFrame]:
     fields = list(sweep.axes)
     rows = design[fields].to_dict("records")
     digits = 4
@@ -102,7 +122,9 @@ def build_points(
     for index, row in zip(design["design_index"], rows, strict=True):
         name = point_name(base.name, row, digits)
         try:
+            _finite(row)
             values = _resolved(sweep, base, row)
+            _finite(values)
             stages = with_stage_values(content["stages"], values, stage_axes)
             spec = SensorSpec.model_validate(
                 {
@@ -121,3 +143,24 @@ def build_points(
         points.append(Point(int(index), values, spec))
     columns = ["design_index", "point", *fields, "reason"]
     return points, pd.DataFrame(skipped, columns=columns)
+
+
+def left_out(
+    points: list[Point], skipped: pd.DataFrame, reasons: Mapping[str, str], fields: list[str]
+) -> tuple[list[Point], pd.DataFrame]:
+    """Move the points the benchmark leaves out (name -> reason) to the skipped table."""
+    kept = [p for p in points if p.spec.name not in reasons]
+    moved = [
+        {
+            "design_index": p.index,
+            "point": p.spec.name,
+            **{f: p.values[f] for f in fields},
+            "reason": reasons[p.spec.name],
+        }
+        for p in points
+        if p.spec.name in reasons
+    ]
+    if not moved:
+        return points, skipped
+    table = pd.concat([skipped, pd.DataFrame(moved, columns=skipped.columns)], ignore_index=True)
+    return kept, table.sort_values("design_index", kind="stable", ignore_index=True)

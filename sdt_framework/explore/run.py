@@ -12,6 +12,7 @@ sensor reproduces that sensor's benchmark numbers exactly.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -19,13 +20,15 @@ import pandas as pd
 from pydantic import ValidationError
 
 from ..bench.config import BenchmarkConfig, config_error, quick_preset
+from ..bench.estimate import Estimate, unfit
 from ..bench.plan import Plan, plan_benchmark
 from ..errors import SDTError
 from ..registry import Registry
 from ..sensor_files import load_sensor_file
 from ..specs import SensorSpec
 from .design import design_points, unit_column
-from .points import Point, build_points
+from .points import Point, build_points, left_out
+from .size import design_size, sweep_estimate
 from .stage_axes import StageAxis, base_value, check_stage_axes
 from .sweep import Sweep
 
@@ -69,11 +72,15 @@ def plan_explore(
     overrides: dict[str, Any],
     registry: Registry,
     where: str = "sweep",
+    check: Callable[[int, Estimate], None] | None = None,
 ) -> ExplorePlan:
     """Design, build and register the points, and plan the benchmark that evaluates them.
 
     ``protocol`` is the sweep file's ``[benchmark]`` table and ``overrides``
     the command-line options (``quick`` applies the quick preset under them).
+    Before the design is built, ``check`` is given its number of points and
+    the sweep's estimate (:mod:`~sdt_framework.explore.size`) and may refuse
+    it; by default a sweep that cannot fit in memory is refused.
     """
     if "sensors" in protocol:
         raise SDTError(
@@ -82,6 +89,12 @@ def plan_explore(
         )
     base = resolve_base(sweep.base, registry)
     stage_axes = check_stage_axes(sweep, base, registry, where)
+    data = {**protocol, **{k: v for k, v in overrides.items() if k != "quick"}}
+    if overrides.get("quick"):
+        data = quick_preset(data)
+    probe = plan_benchmark(_config(data, None, where), registry)  # the data and protocol
+    n_points = design_size(sweep)
+    (check or _refuse_unfit)(n_points, sweep_estimate(probe, base, n_points))
     design = design_points(sweep)
     points, skipped = build_points(sweep, base, design, stage_axes)
     if not points:
@@ -91,18 +104,26 @@ def plan_explore(
         )
     for point in points:
         registry.add(point.spec)
-    data = {**protocol, **{k: v for k, v in overrides.items() if k != "quick"}}
-    if overrides.get("quick"):
-        data = quick_preset(data)
     names = [base.name, *(p.spec.name for p in points)]
+    if probe.reference not in names:  # the reference follows the data, as the probe found
+        names = [probe.reference, *names]
     plan = plan_benchmark(_config(data, names, where), registry)
-    if plan.reference not in names:  # the reference follows the data: known once planned
-        names = [plan.reference, *names]
-        plan = plan_benchmark(_config(data, names, where), registry)
+    points, skipped = left_out(points, skipped, plan.skipped_sensors, list(sweep.axes))
+    if not points:
+        raise SDTError(
+            f"{where}: none of the {len(design)} design points can be evaluated on this data; "
+            f"first reason: {skipped['reason'].iloc[0]}"
+        )
     return ExplorePlan(sweep, base, design, points, skipped, plan, stage_axes)
 
 
-def _config(data: dict[str, Any], sensors: list[str], where: str) -> BenchmarkConfig:
+def _refuse_unfit(points: int, size: Estimate) -> None:
+    problem = unfit(size)
+    if problem is not None:
+        raise SDTError(f"a sweep of {points:,} design points {problem}; use fewer points")
+
+
+def _config(data: dict[str, Any], sensors: list[str] | None, where: str) -> BenchmarkConfig:
     try:
         return BenchmarkConfig.model_validate({**data, "sensors": sensors})
     except ValidationError as exc:

@@ -236,7 +236,9 @@ def _where(exc: ValidationError) -> tuple[str, str]:
 def load_sweep(path: str | os.PathLike[str]) -> tuple[Sweep, dict[str, Any]]:
     """Read ``path``: the validated sweep and the raw ``[benchmark]`` table (protocol)."""
     path = Path(path)
-    data = read_toml(path, missing="sweep file not found; `sdt explore --example` prints one")
+    data = read_toml(
+        path, what="sweep file", missing="sweep file not found; `sdt explore --example` prints one"
+    )
     unknown = sorted(set(data) - {"sweep", "benchmark"})
     if unknown:
         raise SpecFileError(path, unknown[0], "unknown table; a sweep has [sweep] and [benchmark]")

@@ -38,4 +38,4 @@ def _validate(data: dict[str, Any], where: str | os.PathLike[str]) -> PartSpec:
 
 def load_part_file(path: str | os.PathLike[str]) -> PartSpec:
     """Read and validate the part in one TOML file."""
-    return _validate(read_toml(path), path)
+    return _validate(read_toml(path, what="part file"), path)

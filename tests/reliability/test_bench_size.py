@@ -3,10 +3,7 @@
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
 
-import pytest
 from typer.testing import CliRunner
 
 from sdt_framework.bench.config import load_config
@@ -28,21 +25,14 @@ def test_the_size_is_counted_from_the_plan(registry):
     assert estimate(quick, stored_runs=90).runs_to_do == 90
 
 
-def test_hours_of_work_need_yes(tmp_path):
+def test_hours_of_work_need_yes(tmp_path, monkeypatch, sdt_main):
+    # 5000 repeats hold ~150 GB of features: room is made so that only the time is at stake
+    # (tests/reliability/test_bench_size_units.py: a size that cannot fit is refused)
+    monkeypatch.setattr("sdt_framework.data.sizes.available_memory", lambda: 10**15)
     out = tmp_path / "out"
-    command = [sys.executable, "-m", "sdt_framework", "benchmark", "--quick"]
-    try:
-        result = subprocess.run(
-            [*command, "--repeats", "5000", "--out", str(out)],
-            capture_output=True,
-            text=True,
-            timeout=120,  # without the check this would run for days
-            check=False,
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail("a benchmark of days started without asking for --yes")
-    assert result.returncode == 2
-    line = result.stderr.strip()
+    code, _, err = sdt_main("benchmark", "--quick", "--repeats", "5000", "--out", str(out))
+    assert code == 2
+    line = err.strip()
     # 180 runs per 2 repeats; 260 recordings x (2 noisy sensors x 5000 repeats + reference)
     assert line.startswith("error: this benchmark is 450000 runs and 2600260 featurised signals")
     assert re.search(r", estimated [\d.]+ (h|days) on \d+ process", line)
