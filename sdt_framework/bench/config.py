@@ -19,6 +19,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from ..errors import SDTError, SpecFileError, one_line
 from ..io import atomic_write_text
 from ..toml_files import read_toml
+from .config_paths import relative_to, resolve_written, written_by_sdt
 
 __all__ = [
     "SCENARIOS",
@@ -149,6 +150,8 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
                     f"must be a table of options ([benchmark] followed by lines such as "
                     f"repeats = 3), got {type(data).__name__} {one_line(repr(data), 60)}",
                 )
+        if written_by_sdt(path):
+            data = resolve_written(data, Path(path).parent)
     if overrides.pop("quick", False):
         data = quick_preset({**data, **overrides})
     data.update(overrides)
@@ -173,10 +176,14 @@ def quick_preset(data: dict[str, Any]) -> dict[str, Any]:
 
 
 def write_config(config: BenchmarkConfig, path: str | os.PathLike[str]) -> None:
-    """Write the fully resolved config as TOML (re-runnable with `sdt benchmark PATH`)."""
+    """Write the fully resolved config as TOML (re-runnable with `sdt benchmark PATH`).
+
+    Paths are written relative to the file's folder (:mod:`.config_paths`).
+    """
     data = {k: v for k, v in config.model_dump(mode="json").items() if v is not None}
     atomic_write_text(
         path,
         "# Resolved by sdt benchmark; re-run with: sdt benchmark config.toml\n"
-        + tomli_w.dumps({"benchmark": data}),
+        "# (paths are relative to this file's folder)\n"
+        + tomli_w.dumps({"benchmark": relative_to(data, Path(path).parent)}),
     )

@@ -27,6 +27,7 @@ from typing import Any
 from ..errors import SDTError
 from ..io import OutputError, atomic_write_text, ensure_writable_dir
 from .config import BenchmarkConfig, write_config
+from .config_paths import relative_to, resolve_written
 
 __all__ = [
     "MARKER",
@@ -79,7 +80,7 @@ _TEMPORARY = re.compile(r"^\..+\.tmp$")  # left by an atomic write cut short (io
 
 
 def config_identity(config: BenchmarkConfig) -> dict[str, Any]:
-    """The settings that define a benchmark's results (JSON-ready)."""
+    """The settings that define a benchmark's results (JSON-ready), paths as configured."""
     return config.model_dump(mode="json", exclude=set(RUN_ONLY_SETTINGS))
 
 
@@ -111,7 +112,11 @@ def _stored_identity(out: Path) -> dict[str, Any] | None:
         if not isinstance(data, dict) or data.get("format") != _FORMAT:
             raise SDTError(f"{marker} was not written by sdt; choose a new --out folder")
         identity = data.get("configuration")
-        return identity if isinstance(identity, dict) else {}
+        if not isinstance(identity, dict):
+            return {}
+        # version 2 stores paths relative to the folder; version 1 as given (absolute or
+        # relative to the working directory of the run)
+        return identity if data.get("version") == 2 else relative_to(identity, out)
     config = out / "config.toml"
     try:
         text = config.read_text(encoding="utf-8")
@@ -120,8 +125,8 @@ def _stored_identity(out: Path) -> dict[str, Any] | None:
     if not text.startswith(_CONFIG_HEADER):
         return None
     try:
-        data = tomllib.loads(text).get("benchmark", {})
-        return config_identity(BenchmarkConfig.model_validate(data))
+        data = resolve_written(tomllib.loads(text).get("benchmark", {}), out)
+        return relative_to(config_identity(BenchmarkConfig.model_validate(data)), out)
     except (tomllib.TOMLDecodeError, ValueError):
         return None
 
@@ -148,7 +153,7 @@ def claim_results_folder(out: str | Path, config: BenchmarkConfig) -> bool:
             f"--out {out} is a file; name a folder (new or empty, or a results folder to resume)"
         )
     entries = sorted(p.name for p in out.iterdir()) if out.is_dir() else []
-    current = config_identity(config)
+    current = relative_to(config_identity(config), out)  # moves with its data
     resuming = bool(entries)
     if resuming:
         stored = _stored_identity(out)
@@ -175,7 +180,7 @@ def claim_results_folder(out: str | Path, config: BenchmarkConfig) -> bool:
     ensure_writable_dir(out, "results folder", "--out")
     if not (out / MARKER).exists():
         atomic_write_text(
-            out / MARKER, json.dumps({"format": _FORMAT, "version": 1, "configuration": current})
+            out / MARKER, json.dumps({"format": _FORMAT, "version": 2, "configuration": current})
         )
     write_config(config, out / "config.toml")
     return resuming

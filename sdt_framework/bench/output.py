@@ -17,6 +17,7 @@ summary.json                    counts, timings, software versions
 from __future__ import annotations
 
 import json
+import os
 import platform
 from importlib import metadata
 from pathlib import Path
@@ -48,14 +49,23 @@ _PACKAGES = (
 
 
 def software_versions() -> dict[str, str]:
-    """Python and key package versions, for provenance."""
-    versions = {"python": platform.python_version(), "platform": platform.platform()}
+    """Python and key package versions, for provenance (shared with the report)."""
+    versions = {"python": platform.python_version()}
     for name in _PACKAGES:
         try:
             versions[name] = metadata.version(name)
         except metadata.PackageNotFoundError:
             versions[name] = "not installed"
     return versions
+
+
+def _under_data_root(path: str, data: str | None) -> str:
+    """``path`` relative to the data root (the manifest's folder, or the data folder)."""
+    if data is None or not os.path.isabs(path):
+        return path
+    root = os.path.abspath(data if os.path.isdir(data) else os.path.dirname(data) or ".")
+    inside = os.path.commonpath([root, os.path.abspath(path)]) == root
+    return os.path.relpath(path, root) if inside else path
 
 
 def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
@@ -99,9 +109,14 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
             {"sensor": name, "reason": reason} for name, reason in plan.skipped_sensors.items()
         ],
         "reference": plan.reference,
-        "dataset_skipped": [s.as_dict() for s in plan.dataset.skipped],
+        "dataset_skipped": [
+            {**s.as_dict(), "path": _under_data_root(s.path, plan.config.data)}
+            for s in plan.dataset.skipped
+        ],
         "seconds": result.seconds,
         "software": software_versions(),
+        # details of the machine that ran it: here only, never in the shareable report
+        "machine": {"platform": platform.platform(), "processors": os.cpu_count()},
     }
     atomic_write_text(out / "summary.json", json.dumps(summary, indent=2))
     return results

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
@@ -107,8 +108,9 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     recordings = [r for r in recordings if (r.machine, r.run) in needed]
     users = node_sensors(sensors, registry)
     nodes = find_nodes(recordings, everything, config.axes, users) if users else {}
+    data = None if config.data is None else os.path.abspath(config.data)  # one spelling
     key_source = json.dumps(
-        [dataset.name, config.data, config.dataset_options], sort_keys=True, default=str
+        [dataset.name, data, config.dataset_options], sort_keys=True, default=str
     )
     return Plan(
         config,

@@ -18,7 +18,7 @@ import typer
 from rich.table import Table
 from rich.text import Text
 
-from .common import console, err_console, registry, warn
+from .common import console, err_console, print_table, registry, warn
 from .progress import progress_bar
 
 EXIT_CLASSIFIER_FAILED = 1
@@ -123,7 +123,7 @@ def _print_table4(results: Any, sensor_order: list[str]) -> None:
                     *cells,
                     end_section=i == len(sensors) - 1,
                 )
-        console.print(out)
+        print_table(out)
 
 
 def benchmark(

@@ -7,7 +7,7 @@ from dataclasses import replace
 import typer
 
 from ..errors import SDTError
-from .common import console, print_json, registry
+from .common import console, print_json, print_table, registry
 
 __all__ = ["budget"]
 
@@ -98,4 +98,4 @@ def budget(
         out.add_column(column, justify="left" if i < 2 else "right", min_width=widest)
     for row in rows:
         out.add_row(*row)
-    console.print(out)
+    print_table(out)

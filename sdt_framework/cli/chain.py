@@ -8,7 +8,7 @@ from typing import Annotated, Any
 import typer
 
 from ..errors import SDTError
-from .common import console, err_console, print_json, registry
+from .common import console, err_console, print_json, print_table, registry
 
 __all__ = ["degrade_command", "register", "validate_noise_command"]
 
@@ -103,7 +103,7 @@ def _print_table(data: dict[str, Any]) -> None:
         if has_rec:
             row += [f"{data['relative_error_pct'][short]:.2f}", _p(data["p_value"][short])]
         table.add_row(*row)
-    console.print(table)
+    print_table(table)
 
 
 def validate_noise_command(

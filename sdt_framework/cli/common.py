@@ -4,7 +4,15 @@ Both consoles print text as given: rich markup (``[bold]``, ``[/]``) and emoji
 codes (``:x:``) are not interpreted, so a file called ``run[bold].npy`` or
 ``a:x:b.npy`` prints as itself and a message holding ``[/]`` cannot crash the
 printer. Styled labels are built as :class:`rich.text.Text` (:func:`warn`,
-:func:`print_error`), never by formatting a user string into markup.
+:func:`print_error`), never by formatting a user string into markup. Control
+characters in any printed string are shown as escapes, never sent to the
+terminal (:mod:`.visible`).
+
+Tables never cut a cell: when the console is narrower than a table (a pipe or
+a file gets 80 columns), cells wrap (``overflow="fold"``) instead of being
+truncated with an ellipsis, and a table whose columns cannot all fit even
+folded is printed as plain ``column: value`` lines, so no number loses a digit
+and no column disappears.
 """
 
 from __future__ import annotations
@@ -16,20 +24,33 @@ from typing import Any
 
 import typer
 from rich.console import Console
+from rich.measure import Measurement
 from rich.table import Table
 from rich.text import Text
 
 from ..registry import Registry, build_registry
+from .visible import SafeConsole, visible
 
-__all__ = ["console", "err_console", "print_error", "print_json", "registry", "table", "warn"]
+__all__ = [
+    "console",
+    "err_console",
+    "print_error",
+    "print_json",
+    "print_table",
+    "registry",
+    "table",
+    "warn",
+]
 
-console = Console(markup=False, emoji=False)
-err_console = Console(stderr=True, markup=False, emoji=False)
+console: Console = SafeConsole(markup=False, emoji=False)
+err_console: Console = SafeConsole(stderr=True, markup=False, emoji=False)
 
 
 def print_error(message: str, label: str = "error:", style: str = "bold red") -> None:
     """Print ``label message`` on one line to stderr, ``message`` exactly as given."""
-    err_console.print(Text.assemble((label, style), " ", message), highlight=False, soft_wrap=True)
+    err_console.print(
+        Text.assemble((label, style), " ", visible(message)), highlight=False, soft_wrap=True
+    )
 
 
 def warn(message: str, label: str = "warning:") -> None:
@@ -58,8 +79,32 @@ def print_json(data: Any) -> None:
 def table(title: str, columns: list[str], rows: list[list[Any]]) -> None:
     """Print a rich table; cells and title are plain text (no markup, no emoji codes)."""
     out = Table(title=title, title_justify="left")
-    for index, column in enumerate(columns):
-        out.add_column(column, no_wrap=index == 0)  # names stay whole
+    for column in columns:
+        out.add_column(column, overflow="fold")
     for row in rows:
         out.add_row(*["" if cell is None else str(cell) for cell in row])
-    console.print(out)
+    print_table(out)
+
+
+def print_table(out: Table) -> None:
+    """Print ``out`` so that no cell is cut: folded cells, or plain lines when too narrow.
+
+    Every column folds (wraps inside the cell) instead of ending in an ellipsis.
+    When the table's narrowest layout, every column as wide as its longest word,
+    is wider than the console, rich would squeeze columns below their words and
+    finally drop columns; the rows are printed as ``column: value`` lines instead.
+    """
+    for column in out.columns:
+        column.overflow = "fold"
+        column.no_wrap = False
+    unbounded = console.options.update_width(1_000_000)
+    if Measurement.get(console, unbounded, out).minimum <= console.width:
+        console.print(out)
+        return
+    headers = [visible(str(column.header)) for column in out.columns]
+    cells = [[visible(str(cell)) for cell in column.cells] for column in out.columns]
+    if out.title:
+        console.print(str(out.title), soft_wrap=True, highlight=False)
+    for row in zip(*cells, strict=True):
+        pairs = [f"{header}: {value}" for header, value in zip(headers, row, strict=True)]
+        console.print("  ".join(pairs), soft_wrap=True, highlight=False)

@@ -12,7 +12,7 @@ from rich.table import Table
 from rich.text import Text
 
 from ..errors import SDTError
-from .common import console, print_json, warn
+from .common import console, print_json, print_table, warn
 from .outdir import output_folder
 
 __all__ = ["compare"]
@@ -69,7 +69,7 @@ def _print_tables(comparison: Any) -> None:
                 *shown,
                 *(_cell_text(by_candidate[c]) if c in by_candidate else "–" for c in candidates),
             )
-        console.print(out)
+        print_table(out)
 
 
 def _labels(folders: list[Any]) -> list[str]:

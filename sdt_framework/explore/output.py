@@ -22,6 +22,7 @@ from pathlib import Path
 import pandas as pd
 import tomli_w
 
+from ..bench.config_paths import relative_to
 from ..bench.folder import EXPLORE_FILES
 from ..bench.results import write_frame
 from ..io import atomic_write_text
@@ -72,10 +73,11 @@ def write_explore(
     atomic_write_text(
         out / "sweep.toml",
         "# The sweep as run by sdt explore; re-run or resume: sdt explore sweep.toml --out .\n"
+        "# (paths are relative to this file's folder)\n"
         + tomli_w.dumps(
             {
                 "sweep": sweep.model_dump(mode="json", exclude_none=True),
-                "benchmark": _protocol(explore),
+                "benchmark": relative_to(_protocol(explore), out),
             }
         ),
     )

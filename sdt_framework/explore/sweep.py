@@ -34,6 +34,7 @@ from pydantic import (
     model_validator,
 )
 
+from ..bench.config_paths import resolve_written, written_by_sdt
 from ..errors import SpecFileError
 from ..toml_files import read_toml
 from .stage_axes import flatten_stage_keys, is_stage_key
@@ -249,6 +250,8 @@ def load_sweep(path: str | os.PathLike[str]) -> tuple[Sweep, dict[str, Any]]:
         raise SpecFileError(
             path, "benchmark", f"must be a table of options, got {type(protocol).__name__}"
         )
+    if written_by_sdt(path):  # an exploration's own sweep.toml: paths relative to its folder
+        protocol = resolve_written(protocol, path.parent)
     return parse_sweep(data["sweep"], path), dict(protocol)
 
 

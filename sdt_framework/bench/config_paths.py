@@ -1,0 +1,71 @@
+"""Paths in the configuration files sdt writes: relative to the file's own folder.
+
+A results folder is shared: zipped, attached to a thesis, moved to another
+machine. Its ``config.toml`` (and an exploration's ``sweep.toml``) must not
+carry the absolute path of the author's data, yet it must still resume the
+folder. So sdt writes every path setting relative to the folder that holds the
+file (``data = "../pump/manifest.csv"``), and reads a file it wrote (known by
+its first line) back against that folder. A configuration a user wrote keeps
+its own rule: relative paths are taken from the working directory, as given.
+The identity a results folder is resumed by compares paths made absolute, so a
+folder written before this rule (absolute paths) still resumes.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+__all__ = [
+    "PATH_SETTINGS",
+    "WRITTEN_HEADERS",
+    "absolute_paths",
+    "relative_to",
+    "resolve_written",
+    "written_by_sdt",
+]
+
+#: Settings holding a file-system path.
+PATH_SETTINGS = ("data", "allocation", "cache_dir")
+#: First-line prefixes of the configuration files sdt writes.
+WRITTEN_HEADERS = ("# Resolved by sdt benchmark", "# The sweep as run by sdt explore")
+
+
+def written_by_sdt(path: str | os.PathLike[str]) -> bool:
+    """Whether the file at ``path`` is a configuration sdt wrote (by its first line)."""
+    try:
+        with open(path, "rb") as handle:
+            head = handle.read(64).decode("utf-8", errors="replace")
+    except OSError:
+        return False
+    return head.startswith(WRITTEN_HEADERS)
+
+
+def relative_to(settings: dict[str, Any], folder: str | os.PathLike[str]) -> dict[str, Any]:
+    """``settings`` with every path setting written relative to ``folder``."""
+    start = os.path.abspath(folder)
+    out = dict(settings)
+    for name in PATH_SETTINGS:
+        if isinstance(out.get(name), str):
+            out[name] = Path(os.path.relpath(os.path.abspath(out[name]), start)).as_posix()
+    return out
+
+
+def resolve_written(settings: dict[str, Any], folder: str | os.PathLike[str]) -> dict[str, Any]:
+    """``settings`` read from a file sdt wrote in ``folder``: relative paths joined to it."""
+    out = dict(settings)
+    for name in PATH_SETTINGS:
+        value = out.get(name)
+        if isinstance(value, str) and not os.path.isabs(value):
+            out[name] = os.path.normpath(os.path.join(os.path.abspath(folder), value))
+    return out
+
+
+def absolute_paths(settings: dict[str, Any]) -> dict[str, Any]:
+    """``settings`` with every path setting made absolute (from the working directory)."""
+    out = dict(settings)
+    for name in PATH_SETTINGS:
+        if isinstance(out.get(name), str):
+            out[name] = os.path.abspath(out[name])
+    return out

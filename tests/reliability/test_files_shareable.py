@@ -1,0 +1,111 @@
+"""Shareable outputs hold no absolute path of the author's machine and no platform string.
+
+On main, ``config.toml``, ``sweep.toml``, ``report.md``/``.html`` and ``summary.json``
+carried the data's absolute path and the platform string (kernel, libc). Now
+paths are written relative to the results folder, machine details sit only in
+``summary.json["machine"]``, and the folder still resumes: from another working
+directory, and after the folder and its data are moved together.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import platform
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+
+SHAREABLE = ("config.toml", "report.md", "report.html", "summary.json")
+
+
+def _manifest(folder: Path) -> Path:
+    """Six 2 s noise recordings (two classes) and their manifest, paths relative to it."""
+    folder.mkdir()
+    rng = np.random.default_rng(0)
+    lines = ["path,sampling_rate_hz,machine,condition,severity,recording_id,channel"]
+    for condition, gain in (("healthy", 1.0), ("fault", 2.0)):
+        for index in range(3):
+            name = f"{condition}{index}"
+            np.save(folder / f"{name}.npy", gain * rng.normal(size=40_000))
+            severity = index + 1 if condition == "fault" else ""
+            lines.append(f"{name}.npy,20000,m,{condition},{severity},{name},ch1")
+    manifest = folder / "manifest.csv"
+    manifest.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return manifest
+
+
+def _sdt(*args: str, cwd: Path, cache: Path) -> subprocess.CompletedProcess[str]:
+    env = {**os.environ, "SDT_CACHE_DIR": str(cache)}
+    done = subprocess.run(
+        [sys.executable, "-m", "sdt_framework", *args],
+        cwd=cwd,
+        env=env,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert done.returncode == 0, done.stderr
+    return done
+
+
+def _leaks(folder: Path, secret: str) -> list[str]:
+    found = []
+    for name in SHAREABLE:
+        text = (folder / name).read_text(encoding="utf-8")
+        if name == "summary.json":
+            data = json.loads(text)
+            assert data["machine"]["platform"] == platform.platform()
+            text = json.dumps({k: v for k, v in data.items() if k != "machine"})
+        found += [f"{name}: {secret}" for s in (secret,) if s in text]
+        found += [f"{name}: platform" for p in (platform.platform(),) if p in text]
+    return found
+
+
+def test_a_results_folder_names_no_absolute_path_and_resumes_when_moved(tmp_path):
+    home = tmp_path / "home"
+    home.mkdir()
+    manifest = _manifest(home / "pump")
+    cache = tmp_path / "cache"
+    args = ["--sensors", "adxl345", "--classifiers", "lr", "--quick"]
+    _sdt("benchmark", "--data", str(manifest), *args, "--out", "results", cwd=home, cache=cache)
+    out = home / "results"
+    assert _leaks(out, str(tmp_path)) == []
+    assert 'data = "../pump/manifest.csv"' in (out / "config.toml").read_text()
+
+    # resumed from its own config.toml, from another working directory
+    again = _sdt("benchmark", str(out / "config.toml"), "--out", str(out), cwd="/", cache=cache)
+    assert "(0 computed, 6 resumed, 0 failed)" in again.stdout
+
+    # the folder and its data moved together: it runs again, with the same numbers
+    moved = tmp_path / "elsewhere"
+    shutil.copytree(home, moved)
+    _sdt("benchmark", "results/config.toml", "--out", "results", cwd=moved, cache=cache)
+    before = (out / "table4.md").read_text()
+    assert (moved / "results" / "table4.md").read_text() == before
+
+
+def test_an_exploration_writes_its_sweep_with_relative_paths(tmp_path):
+    home = tmp_path / "home"
+    home.mkdir()
+    manifest = _manifest(home / "pump")
+    sweep = home / "sweep.toml"
+    sweep.write_text(
+        '[sweep]\nbase = "adxl345"\ntarget = { max_loss = 0.1 }\n'
+        "[sweep.axes.noise_density_ug_rthz]\nlevels = [90, 290]\n"
+        f'[benchmark]\ndata = "{manifest.as_posix()}"\nclassifiers = ["lr"]\nrepeats = 1\n'
+        'scenarios = ["forward"]\n',
+        encoding="utf-8",
+    )
+    cache = tmp_path / "cache"
+    _sdt("explore", str(sweep), "--out", "explored", "--no-report", cwd=home, cache=cache)
+    written = (home / "explored" / "sweep.toml").read_text(encoding="utf-8")
+    assert str(tmp_path) not in written
+    assert 'data = "../pump/manifest.csv"' in written
+    again = _sdt(
+        "explore", "explored/sweep.toml", "--out", "explored", "--no-report", cwd=home, cache=cache
+    )
+    assert "runs (0 still to do)" in again.stdout, again.stdout
