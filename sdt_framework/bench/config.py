@@ -178,9 +178,16 @@ def quick_preset(data: dict[str, Any]) -> dict[str, Any]:
 def write_config(config: BenchmarkConfig, path: str | os.PathLike[str]) -> None:
     """Write the fully resolved config as TOML (re-runnable with `sdt benchmark PATH`).
 
-    Paths are written relative to the file's folder (:mod:`.config_paths`).
+    Paths are written relative to the file's folder (:mod:`.config_paths`). The
+    feature-cache folder is left out: it is where this machine keeps a cache,
+    not part of the benchmark, and changes no result (a resume uses
+    ``--cache-dir``, ``$SDT_CACHE_DIR`` or the default cache).
     """
-    data = {k: v for k, v in config.model_dump(mode="json").items() if v is not None}
+    data = {
+        k: v
+        for k, v in config.model_dump(mode="json").items()
+        if v is not None and k != "cache_dir"
+    }
     atomic_write_text(
         path,
         "# Resolved by sdt benchmark; re-run with: sdt benchmark config.toml\n"

@@ -27,7 +27,7 @@ __all__ = [
 ]
 
 #: Settings holding a file-system path.
-PATH_SETTINGS = ("data", "allocation", "cache_dir")
+PATH_SETTINGS = ("data", "allocation")  # cache_dir is not written (bench.config)
 #: First-line prefixes of the configuration files sdt writes.
 WRITTEN_HEADERS = ("# Resolved by sdt benchmark", "# The sweep as run by sdt explore")
 

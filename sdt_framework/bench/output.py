@@ -116,7 +116,11 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
         "seconds": result.seconds,
         "software": software_versions(),
         # details of the machine that ran it: here only, never in the shareable report
-        "machine": {"platform": platform.platform(), "processors": os.cpu_count()},
+        "machine": {
+            "platform": platform.platform(),
+            "processors": os.cpu_count(),
+            "cache_dir": plan.config.cache_dir and os.path.abspath(plan.config.cache_dir),
+        },
     }
     atomic_write_text(out / "summary.json", json.dumps(summary, indent=2))
     return results

@@ -87,4 +87,5 @@ def write_explore(
 def _protocol(explore: ExplorePlan) -> dict:
     data = explore.plan.config.model_dump(mode="json", exclude_none=True)
     data.pop("sensors", None)
+    data.pop("cache_dir", None)  # this machine's cache, not the sweep (see bench.config)
     return data
