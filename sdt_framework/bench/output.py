@@ -28,6 +28,7 @@ from .config import write_config
 from .folder import OUTPUT_FILES
 from .results import per_recording, table4_markdown, tidy, write_frame
 from .runner import BenchmarkResult
+from .saturation import saturation_summary
 
 __all__ = ["OUTPUT_FILES", "software_versions", "write_outputs"]
 
@@ -101,6 +102,9 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
         "reference": plan.reference,
         "dataset_skipped": [s.as_dict() for s in plan.dataset.skipped],
         "seconds": result.seconds,
+        "saturation": saturation_summary(result.saturation)
+        if result.saturation is not None
+        else {},
         "software": software_versions(),
     }
     atomic_write_text(out / "summary.json", json.dumps(summary, indent=2))
