@@ -20,6 +20,7 @@ from typing import TypeVar
 
 import numpy as np
 
+from .dtypes import describe_dtype, is_real
 from .errors import ArgumentTypeError, ArgumentValueError, one_line
 from .registry import Registry, build_registry
 from .specs import SensorSpec, Spec
@@ -35,10 +36,6 @@ __all__ = [
 ]
 
 S = TypeVar("S", bound=Spec)
-
-#: dtype kinds a signal may have: signed and unsigned integers, floats
-_REAL_KINDS = "iuf"
-_KIND_NAMES = {"b": "booleans", "c": "complex numbers", "O": "Python objects", "U": "text"}
 
 
 @functools.cache
@@ -107,11 +104,6 @@ def check_rate(fs: object, argument: str = "fs") -> float:
     return rate
 
 
-def describe_dtype(dtype: np.dtype) -> str:
-    """What a non-real dtype holds, in words: ``"booleans (dtype bool)"``."""
-    return f"{_KIND_NAMES.get(dtype.kind, 'not real numbers')} (dtype {dtype})"
-
-
 def real_array(x: object, argument: str = "x", label: str = "") -> np.ndarray:
     """``x`` as a numpy array of real numbers (int or float dtype), not copied if it is one.
 
@@ -125,7 +117,7 @@ def real_array(x: object, argument: str = "x", label: str = "") -> np.ndarray:
         raise ArgumentValueError(
             f"{argument}{where} cannot be read as an array of numbers: {one_line(exc, 120)}"
         ) from None
-    if array.dtype.kind not in _REAL_KINDS:
+    if not is_real(array.dtype):
         raise ArgumentTypeError(
             f"{argument}{where} must hold real numbers (int or float), got "
             f"{describe_dtype(array.dtype)}; convert it first, e.g. np.asarray({argument}, "

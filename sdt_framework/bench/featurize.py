@@ -14,7 +14,8 @@ Feature blocks are cached on disk keyed by the dataset, the recording (and
 its file's size and modification time), the sensor's and the feature set's
 content hashes, the windowing and the noise seed, so adding a classifier to a
 finished benchmark recomputes no features. A failure is never cached. A
-corrupt entry (truncated, not an archive, wrong arrays) is discarded and
+corrupt entry (truncated, not an archive, wrong arrays) or one whose contents
+no longer match their checksum (:mod:`.feature_cache`) is discarded and
 recomputed, and named in a note the orchestrator shows as a warning (workers
 cannot print reliably: on Dask their output goes to the worker's log).
 """
@@ -34,14 +35,14 @@ from ..chain.shared import SharedPrefix, prefix_key
 from ..data.cache import CORRUPT_ENTRY_ERRORS
 from ..data.recording import Recording
 from ..features import extract
-from ..io import atomic_path
 from ..seeding import derive_seed
 from ..specs import FeatureSetSpec, SensorSpec
 from ..stages import draw_unit, has_tolerances, is_random, uses_node
+from .feature_cache import CachedBlock, ChecksumMismatchError, read_entry, write_entry
 
 __all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurize_recording", "noise_seed"]
 
-CACHE_VERSION = "1"
+CACHE_VERSION = "2"  # 2: entries carry full-scale counts and a checksum
 
 
 @dataclass(frozen=True)
@@ -56,6 +57,8 @@ class FeatureBlock:
     window: np.ndarray
     source: str  # computed | cached (read from disk) | shared (deterministic chain)
     unit: int = -1  # physical unit drawn from the tolerances; -1: the nominal profile
+    at_full_scale: int = 0  # samples of the degraded signal at +-full scale (saturated)
+    samples: int = 0  # samples of the degraded signal
 
 
 @dataclass
@@ -144,10 +147,16 @@ def _other_axes(job: FeatureJob) -> list[str]:
     return sorted({"x", "y", "z"} - {job.axis})
 
 
-def _compute(shared: SharedPrefix, job: FeatureJob, sensor: SensorSpec, chain_seed: int | None):
+def _compute(
+    shared: SharedPrefix, job: FeatureJob, sensor: SensorSpec, chain_seed: int | None
+) -> CachedBlock:
     degraded, fs_out = shared.degrade(sensor, seed=chain_seed or 0, noise=chain_seed is not None)
     table = extract(degraded, fs_out, job.feature_set, window_s=job.window_s, settle_s=job.settle_s)
-    return table.values, table.acquisition, table.window
+    at_full_scale = 0
+    if sensor.requantise and sensor.full_scale_g is not None:  # clipped samples sit there
+        at_full_scale = int(np.count_nonzero(np.abs(degraded) >= sensor.full_scale_g))
+    counts = np.array([at_full_scale, degraded.size], dtype=np.int64)
+    return table.values, table.acquisition, table.window, counts
 
 
 def _variants(job: FeatureJob) -> list[tuple[SensorSpec, int]]:
@@ -182,22 +191,6 @@ def _by_prefix(job: FeatureJob) -> list[list[tuple[SensorSpec, int]]]:
     return list(groups.values())
 
 
-def _read_cached(path: Path, n_features: int) -> tuple[np.ndarray, ...]:
-    """The arrays of one cache entry, checked; raises ValueError if they do not fit together."""
-    with np.load(path, allow_pickle=False) as stored:
-        arrays = (stored["values"], stored["acquisition"], stored["window"])
-    values, acquisition, window = arrays
-    if (
-        values.ndim != 2
-        or values.shape[1] != n_features
-        or values.dtype != np.float32
-        or acquisition.shape != (len(values),)
-        or window.shape != (len(values),)
-    ):
-        raise ValueError("arrays of the wrong shape")
-    return arrays
-
-
 def featurize_recording(job: FeatureJob) -> RecordingFeatures:
     """Features of one recording for every (sensor, unit, repetition) of the job."""
     shared: SharedPrefix | None = None  # the recording, read on first need
@@ -218,8 +211,14 @@ def featurize_recording(job: FeatureJob) -> RecordingFeatures:
             arrays = None
             if path is not None and path.exists():
                 try:
-                    arrays = _read_cached(path, n_features)
+                    arrays = read_entry(path, key, n_features)
                     source = "cached"
+                except ChecksumMismatchError:
+                    out.notes.append(
+                        f"feature-cache entry {path} was changed after it was written (its "
+                        f"checksum does not match); discarded, recomputing it"
+                    )
+                    path.unlink(missing_ok=True)
                 except CORRUPT_ENTRY_ERRORS as exc:
                     out.notes.append(
                         f"corrupt feature-cache entry {path} ({type(exc).__name__}) "
@@ -232,10 +231,19 @@ def featurize_recording(job: FeatureJob) -> RecordingFeatures:
                 arrays = _compute(shared, job, sensor, chain_seed)
                 source = "computed"
                 if path is not None:
-                    with atomic_path(path) as tmp, tmp.open("wb") as handle:
-                        np.savez(handle, values=arrays[0], acquisition=arrays[1], window=arrays[2])
+                    write_entry(path, key, arrays)
+            values, acquisition, window, counts = arrays
             block = FeatureBlock(
-                job.recording.recording_id, sensor.name, repeat, *arrays, source, unit
+                job.recording.recording_id,
+                sensor.name,
+                repeat,
+                values,
+                acquisition,
+                window,
+                source,
+                unit,
+                int(counts[0]),
+                int(counts[1]),
             )
             done[(sensor.name, unit, chain_seed)] = block
             blocks.append(block)
@@ -256,4 +264,6 @@ def _relabel(block: FeatureBlock, repeat: int, unit: int, source: str) -> Featur
         block.window,
         source,
         unit,
+        block.at_full_scale,
+        block.samples,
     )

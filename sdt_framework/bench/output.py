@@ -29,6 +29,7 @@ from .config import write_config
 from .folder import OUTPUT_FILES
 from .results import per_recording, table4_markdown, tidy, write_frame
 from .runner import BenchmarkResult
+from .saturation import saturation_summary
 
 __all__ = ["OUTPUT_FILES", "software_versions", "write_outputs"]
 
@@ -114,6 +115,9 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
             for s in plan.dataset.skipped
         ],
         "seconds": result.seconds,
+        "saturation": saturation_summary(result.saturation)
+        if result.saturation is not None
+        else {},
         "software": software_versions(),
         # details of the machine that ran it: here only, never in the shareable report
         "machine": {

@@ -37,6 +37,7 @@ from .execute import check_scheduler_address, open_executor
 from .featurize import FeatureBlock, FeatureJob, featurize_recording
 from .folder import claim_results_folder
 from .plan import Plan, plan_benchmark
+from .saturation import saturation_table
 from .store import load_finished, store_finished
 
 __all__ = ["BenchmarkResult", "Plan", "plan_benchmark", "preflight", "run_benchmark"]
@@ -61,6 +62,7 @@ class BenchmarkResult:
     runs_computed: int = 0
     runs_resumed: int = 0
     seconds: dict[str, float] = field(default_factory=dict)
+    saturation: pd.DataFrame | None = None  # samples at full scale per (sensor, recording)
 
 
 def _run_key(
@@ -272,4 +274,5 @@ def run_benchmark(
         runs_computed=len(todo),
         runs_resumed=len(planned) - len(todo),
         seconds=seconds,
+        saturation=saturation_table(blocks, {s.name: s.full_scale_g for s in plan.sensors}),
     )

@@ -13,7 +13,7 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..api import describe_dtype
+from ..dtypes import describe_dtype, is_real
 from ..errors import SDTError
 from ..specs import SensorSpec
 
@@ -48,7 +48,7 @@ def check_signal(x: ArrayLike, sensor: SensorSpec, label: str) -> NDArray[np.flo
     (their count and first index are reported).
     """
     arr = np.asarray(x)
-    if arr.dtype.kind not in "iuf":
+    if not is_real(arr.dtype):
         raise ChainInputTypeError(
             sensor.name,
             label,

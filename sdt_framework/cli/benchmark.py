@@ -241,6 +241,7 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
     from ..bench.estimate import CONFIRM_ABOVE_SECONDS
     from ..bench.output import write_outputs
     from ..bench.runner import plan_benchmark, preflight, run_benchmark
+    from ..bench.saturation import saturation_lines, saturation_summary
     from .planned import check_size, print_skipped
 
     plan = plan_benchmark(config, registry(ctx))
@@ -271,6 +272,8 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
             result = run_benchmark(plan, out_dir, progress, warn)
         results = write_outputs(result, out_dir)
     _print_table4(results, [s.name for s in plan.sensors])
+    for line in saturation_lines(saturation_summary(result.saturation)):
+        warn(line)
     if config.report:
         from ..report import write_report  # the report layer sits above the benchmark
 

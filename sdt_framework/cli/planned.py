@@ -67,6 +67,10 @@ def check_size(
     return size
 
 
+#: skipped data files named one per line; the rest counted (summary.json lists all)
+_SHOWN_FILES = 5
+
+
 def print_skipped(plan: Plan, shown: Collection[str] = ()) -> None:
     """One line per sensor and per (machine, scenario) the plan leaves out, with the reason.
 
@@ -77,3 +81,12 @@ def print_skipped(plan: Plan, shown: Collection[str] = ()) -> None:
             err_console.print(f"skipped sensor {name}: {reason}", highlight=False)
     for (machine, scenario), reason in sorted(plan.skipped.items()):
         err_console.print(f"skipped {machine} / {scenario}: {reason}", highlight=False)
+    files = plan.dataset.skipped
+    for item in files[:_SHOWN_FILES]:
+        err_console.print(f"skipped {item.path}: {item.reason}", highlight=False, soft_wrap=True)
+    if len(files) > _SHOWN_FILES:
+        err_console.print(
+            f"skipped {len(files) - _SHOWN_FILES} more files or folders (all listed in "
+            f"summary.json, dataset_skipped)",
+            highlight=False,
+        )

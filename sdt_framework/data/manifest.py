@@ -39,7 +39,14 @@ import numpy as np
 from ..errors import SDTError
 from ..inputs import not_regular
 from .manifest_table import ManifestRow, read_manifest_rows
-from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
+from .recording import (
+    DataFileError,
+    Dataset,
+    Recording,
+    SignalTypeError,
+    Skipped,
+    measurement_groups,
+)
 from .signal_files import read_signal, signal_shape
 from .tokens import quote
 
@@ -178,6 +185,8 @@ def open_manifest(
         except DataFileError as exc:
             skipped.append(Skipped(str(fields["file"]), f"{exc} (manifest {fields['where']})"))
             continue
+        except SignalTypeError as exc:
+            raise SignalTypeError(f"{exc} (manifest {manifest} {fields['where']})") from None
         if note:
             notes.append(note)
         key = (fields["machine"], fields["run"], fields["channel"])

@@ -30,6 +30,15 @@ class DataFileError(SDTError):
     """A data file that cannot be used; the message names the file and the row."""
 
 
+class SignalTypeError(SDTError):
+    """A signal file holding booleans, complex numbers, text...: refused, never converted.
+
+    Unlike a :class:`DataFileError` (a missing or unreadable file, listed as
+    skipped), such a file was read: converting it would change the data
+    without a word (0/1 g, a dropped imaginary part), so the run stops.
+    """
+
+
 def measurement_groups(n_acquisitions: int) -> tuple[int, ...]:
     """Measurement index of each acquisition: column ``i`` belongs to group ``i // 5``."""
     return tuple(i // ACQUISITIONS_PER_MEASUREMENT for i in range(n_acquisitions))

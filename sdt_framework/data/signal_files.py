@@ -16,8 +16,9 @@ from pathlib import Path
 
 import numpy as np
 
+from ..dtypes import describe_dtype, is_real
 from .csv_signal import read_csv_signal
-from .recording import DataFileError
+from .recording import DataFileError, SignalTypeError
 from .tokens import brief, quote
 
 __all__ = ["read_signal", "signal_shape"]
@@ -60,11 +61,22 @@ def _names(names: list[str]) -> str:
 
 def _load_npy(file: Path, **options: object) -> np.ndarray:
     try:
-        return np.load(file, allow_pickle=False, **options)  # type: ignore[call-overload]
+        data = np.load(file, allow_pickle=False, **options)  # type: ignore[call-overload]
     except OSError as exc:
         raise DataFileError(f"{file}: cannot read ({exc.strerror or brief(exc)})") from None
     except (ValueError, EOFError) as exc:
         raise DataFileError(f"{file}: not a readable NPY file ({brief(exc)})") from None
+    return _real(file, data)
+
+
+def _real(file: Path, data: np.ndarray) -> np.ndarray:
+    """``data`` if it holds real numbers; booleans, complex, text... are refused by name."""
+    if not is_real(data.dtype):
+        raise SignalTypeError(
+            f"{file}: holds {describe_dtype(data.dtype)}, not real numbers; save the signal "
+            f"as int or float samples in g (nothing is converted for you)"
+        )
+    return data
 
 
 def signal_shape(file: Path, variable: str | None) -> tuple[tuple[int, int], str | None]:
@@ -103,10 +115,7 @@ def read_signal(file: Path, variable: str | None) -> np.ndarray:
         return read_csv_signal(file, variable).data  # every value checked finite
     else:
         raise DataFileError(f"{file}: unsupported file type {suffix!r}; use {', '.join(SUFFIXES)}")
-    try:
-        data = np.asarray(data, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise DataFileError(f"{file}: holds {data.dtype} values, not numbers") from None
+    data = np.asarray(_real(file, np.asarray(data)), dtype=np.float64)
     _orient(file, data.shape)  # rejects 0-D and >2-D arrays
     if data.ndim == 2 and 1 in data.shape:
         data = data.reshape(-1)

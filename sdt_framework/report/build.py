@@ -110,6 +110,34 @@ def _provenance(folder: ResultsFolder) -> list[Block]:
     return blocks
 
 
+def _saturation(folder: ResultsFolder) -> list[Block]:
+    """A section naming the recordings a sensor saw mostly at its full scale, if any."""
+    entries = (folder.summary or {}).get("saturation", {})
+    rows = tuple(
+        (
+            sensor,
+            f"+-{entry['full_scale_g']:g} g",
+            f"{entry['fraction']:.2%}",
+            f"{entry['recordings_above_limit']} of {entry['recordings']}",
+            ", ".join(f"{w['recording_id']} ({w['fraction']:.0%})" for w in entry["worst"]),
+        )
+        for sensor, entry in entries.items()
+        if entry.get("recordings_above_limit")
+    )
+    if not rows:
+        return []
+    limit = next(iter(entries.values()))["limit"]
+    return [
+        Heading("Saturation", 2),
+        Paragraph(
+            f"Samples at the sensor's full scale (clipped by the twin) in repetition 0. A "
+            f"recording is listed when at least {limit:.0%} of its samples are: its windows "
+            f"show the clipped signal, and its scores say what the part would have done there."
+        ),
+        Table(("sensor", "full scale", "all samples", "recordings above", "worst"), rows),
+    ]
+
+
 def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> list[Block]:
     """The whole report as blocks; draws the figures into ``figures_dir``."""
     colors = sensor_colors(folder.sensors, folder.reference)
@@ -128,6 +156,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     )
     if not folder.failed.empty:
         blocks += [Heading("Failed runs", 2), failed_table(folder.failed)]
+    blocks += _saturation(folder)
     blocks += unit_blocks(folder)
     blocks += exploration_blocks(folder.path)
     blocks += edge_blocks(folder, registry)
