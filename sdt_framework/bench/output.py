@@ -123,7 +123,7 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
         "machine": {
             "platform": platform.platform(),
             "processors": os.cpu_count(),
-            "cache_dir": plan.config.cache_dir and os.path.abspath(plan.config.cache_dir),
+            "cache_dir": result.cache_dir,
         },
     }
     atomic_write_text(out / "summary.json", json.dumps(summary, indent=2))

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 import time
 import warnings
 from collections.abc import Callable
@@ -63,6 +64,7 @@ class BenchmarkResult:
     runs_resumed: int = 0
     seconds: dict[str, float] = field(default_factory=dict)
     saturation: pd.DataFrame | None = None  # samples at full scale per (sensor, recording)
+    cache_dir: str = ""  # the feature cache used (this machine's)
 
 
 def _run_key(
@@ -275,4 +277,5 @@ def run_benchmark(
         runs_resumed=len(planned) - len(todo),
         seconds=seconds,
         saturation=saturation_table(blocks, {s.name: s.full_scale_g for s in plan.sensors}),
+        cache_dir=os.path.abspath(cache_dir),
     )

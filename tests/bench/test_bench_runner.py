@@ -34,7 +34,9 @@ def test_writes_every_output_file(small_config, registry, tmp_path):
     assert set(allocation["scenario"]) == {"forward", "backward", "interpolation"}
     assert "Experiment A. Forward extrapolation" in (tmp_path / "out" / "table4.md").read_text()
     rerun = load_config(tmp_path / "out" / "config.toml", {})
-    assert rerun == small_config()
+    # every setting round-trips but the feature-cache folder: this machine's, not the
+    # benchmark's (it changes no result; summary.json's machine key names it)
+    assert rerun == small_config().model_copy(update={"cache_dir": None})
 
 
 def test_windows_of_one_run_never_sit_on_both_sides(small_config, registry, tmp_path):
