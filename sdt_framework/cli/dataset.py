@@ -147,7 +147,12 @@ def inspect(
 ) -> None:
     """Summarise a dataset: one line per recording, then what was skipped and why.
 
+    An enDAQ .IDE recording lists its channels instead: subchannels (axes),
+    units, the sensor table's parts and the rate measured from the timestamps.
+
     Example:
+
+      sdt dataset inspect SSX66115.IDE
 
       sdt dataset inspect ~/data/NLN-EMP --validate
 
@@ -156,7 +161,12 @@ def inspect(
       sdt dataset inspect synthetic-pump
     """
     from ..data import open_dataset  # heavy (scipy, pyarrow): on use only
+    from ..data.ide import is_ide
     from .guards import os_errors
+
+    if is_ide(path_or_name):
+        _inspect_ide(path_or_name, as_json)
+        return
 
     with os_errors(path_or_name):
         dataset = open_dataset(registry(ctx), path_or_name)
@@ -208,3 +218,27 @@ def inspect(
                 f"skipped {item['path']}: {item['reason']}", highlight=False, soft_wrap=True
             )
     console.print(dataset.summary_line(), highlight=False, soft_wrap=True)
+
+
+def _inspect_ide(path: str, as_json: bool) -> None:
+    """Channels of an IDE file: parts, axes, units, samples, measured and median rates."""
+    from ..data.ide import inspect_ide
+    from .guards import os_errors
+
+    with os_errors(path):
+        channels = inspect_ide(path)
+    if as_json:
+        print_json([c.as_dict() for c in channels])
+        return
+    rows = [
+        [c.id, c.name, ", ".join(c.parts) or "-",
+         ", ".join(f"{s.axis or s.name} [{s.units}]" for s in c.subchannels), c.samples,
+         f"{c.start_s:.3f}-{c.end_s:.3f}", f"{c.rate_hz:.2f}", f"{c.median_rate_hz:.2f}"]
+        for c in channels
+    ]  # fmt: skip
+    table(
+        f"{path}: {len(channels)} channels (rates from timestamps)",
+        ["channel", "name", "parts", "subchannels", "samples", "time s", "rate Hz",
+         "median Hz"],
+        rows,
+    )  # fmt: skip

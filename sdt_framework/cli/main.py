@@ -6,7 +6,7 @@ from pathlib import Path
 
 import typer
 
-from . import classifiers, features, plugins, sensors
+from . import classifiers, features, plugins, sensors, twin
 from . import dataset as dataset_cli
 from .benchmark import benchmark
 from .budget import budget
@@ -29,6 +29,7 @@ app.add_typer(sensors.app, name="sensors")
 app.add_typer(features.app, name="features")
 app.add_typer(classifiers.app, name="classifiers")
 app.add_typer(dataset_cli.app, name="dataset")
+app.add_typer(twin.app, name="twin")
 register_chain_commands(app)
 app.command("benchmark")(benchmark)
 app.command("report")(report)

@@ -1,0 +1,221 @@
+"""enDAQ / Slam Stick recorder files (``.IDE``), read through their maintained reader, idelib.
+
+An IDE file holds several channels (a piezo reference, a MEMS accelerometer,
+pressure, orientation...), each sampled on its own clock with real
+timestamps, and a sensor table naming the parts. What sdt needs from one:
+
+- the channels, their subchannels (axes), units and part names, and the rate
+  *measured* from the timestamps (a MEMS part's real output rate differs from
+  its nominal ODR by a few percent: 3134 Hz for an ADXL345 set to 3200 Hz);
+- one channel's samples in g, on an even time grid. The rate is the slope of
+  a least-squares line through the timestamps. When a timestamp strays from
+  that line by more than :data:`EVEN_TOLERANCE` sample periods (a clock step,
+  a gap), the samples are resampled onto the even grid by linear
+  interpolation at their recorded times (the chain's own sampling rule, SPEC
+  stage 3), and a note says so; otherwise they are used as recorded.
+
+EBML parsing is idelib's (MIT), never done here.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..errors import SDTError
+
+__all__ = [
+    "EVEN_TOLERANCE",
+    "IdeChannel",
+    "IdeSignal",
+    "IdeSubchannel",
+    "inspect_ide",
+    "is_ide",
+    "read_ide",
+]
+
+#: largest distance (in sample periods) of a timestamp from the fitted line for "even"
+EVEN_TOLERANCE = 1.0
+
+
+@dataclass(frozen=True)
+class IdeSubchannel:
+    """One subchannel of a channel: an axis of an accelerometer, or another quantity."""
+
+    index: int
+    name: str
+    axis: str | None  # "x", "y" or "z" for an accelerometer axis
+    quantity: str
+    units: str
+    part: str | None
+
+
+@dataclass(frozen=True)
+class IdeChannel:
+    """One channel: its subchannels, sample count, time span and measured rates."""
+
+    id: int
+    name: str
+    subchannels: tuple[IdeSubchannel, ...]
+    samples: int
+    start_s: float
+    end_s: float
+    rate_hz: float  # slope of the timestamps (least squares)
+    median_rate_hz: float  # 1 / median interval
+
+    @property
+    def parts(self) -> list[str]:
+        """The part names of the sensor table behind this channel's subchannels."""
+        return sorted({s.part for s in self.subchannels if s.part})
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready form."""
+        return {
+            "channel": self.id,
+            "name": self.name,
+            "parts": self.parts,
+            "samples": self.samples,
+            "start_s": self.start_s,
+            "end_s": self.end_s,
+            "rate_hz": self.rate_hz,
+            "median_rate_hz": self.median_rate_hz,
+            "subchannels": [vars(s) for s in self.subchannels],
+        }
+
+
+@dataclass(frozen=True)
+class IdeSignal:
+    """Samples of one channel's subchannels in their units, on an even grid."""
+
+    path: str
+    channel: IdeChannel
+    subchannels: tuple[IdeSubchannel, ...]
+    start_s: float  # time of the first sample on the even grid
+    rate_hz: float
+    values: np.ndarray  # float64 (n_subchannels, n_samples)
+    note: str | None  # set when the samples were resampled
+
+    @property
+    def times(self) -> np.ndarray:
+        """Time of each sample, s."""
+        return self.start_s + np.arange(self.values.shape[1]) / self.rate_hz
+
+
+def is_ide(path: str | os.PathLike[str]) -> bool:
+    """Whether ``path`` is named as an IDE file."""
+    return Path(path).suffix.lower() == ".ide"
+
+
+def _open(path: str | os.PathLike[str]) -> Any:
+    import idelib  # heavy: on use only
+
+    path = Path(path)
+    if not path.is_file():
+        raise SDTError(f"{path}: no such IDE file; check the path")
+    try:
+        return idelib.importFile(str(path))
+    except Exception as exc:
+        raise SDTError(
+            f"{path}: not a readable enDAQ IDE file ({type(exc).__name__}); give a .IDE "
+            f"recording written by an enDAQ or Slam Stick recorder"
+        ) from None
+
+
+def _axis(name: str) -> str | None:
+    first = name.strip().split(" ")[0].lower()
+    return first if first in ("x", "y", "z") else None
+
+
+def _rates(times: np.ndarray) -> tuple[float, float, float]:
+    """(slope rate, median rate, largest distance of a timestamp from the line in periods)."""
+    if len(times) < 2:
+        return float("nan"), float("nan"), 0.0
+    index = np.arange(len(times), dtype=np.float64)
+    slope, intercept = np.polyfit(index, times, 1)
+    stray = float(np.max(np.abs(times - (slope * index + intercept))) / slope)
+    return 1.0 / float(slope), 1.0 / float(np.median(np.diff(times))), stray
+
+
+def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
+    session = channel.getSession()
+    rows = 1 + len(channel.subchannels)
+    data = (
+        np.asarray(session.arraySlice(), dtype=np.float64)
+        if len(session)
+        else np.empty((rows, 0))  # a channel that recorded nothing
+    )
+    times = data[0] * 1e-6  # microseconds
+    rate, median, _ = _rates(times)
+    subs = tuple(
+        IdeSubchannel(
+            i,
+            str(s.name),
+            _axis(str(s.name)),
+            str(s.units[0]),
+            str(s.units[1]),
+            getattr(getattr(s, "sensor", None), "name", None),
+        )
+        for i, s in enumerate(channel.subchannels)
+    )
+    start, end = (float(times[0]), float(times[-1])) if len(times) else (0.0, 0.0)
+    return IdeChannel(
+        int(channel.id), str(channel.name), subs, len(times), start, end, rate, median
+    ), data
+
+
+def inspect_ide(path: str | os.PathLike[str]) -> list[IdeChannel]:
+    """Every channel of the IDE file at ``path``, in id order."""
+    doc = _open(path)
+    try:
+        return [_describe(doc.channels[cid])[0] for cid in sorted(doc.channels)]
+    finally:
+        doc.close()
+
+
+def read_ide(
+    path: str | os.PathLike[str],
+    channel: int,
+    subchannels: list[str] | None = None,
+) -> IdeSignal:
+    """Samples of ``channel`` (by id), its ``subchannels`` (axes ``x``/``y``/``z`` or names;
+    default every one), on an even time grid at the measured rate."""
+    doc = _open(path)
+    try:
+        if channel not in doc.channels:
+            found = ", ".join(f"{c} ({doc.channels[c].name})" for c in sorted(doc.channels))
+            raise SDTError(f"{path}: no channel {channel}; the file holds channels {found}")
+        info, data = _describe(doc.channels[channel])
+    finally:
+        doc.close()
+    chosen = list(info.subchannels)
+    if subchannels is not None:
+        by_key = {s.axis: s for s in info.subchannels if s.axis} | {
+            s.name: s for s in info.subchannels
+        }
+        missing = [k for k in subchannels if k not in by_key]
+        if missing:
+            names = ", ".join(f"{s.axis or s.name!r}" for s in info.subchannels)
+            raise SDTError(
+                f"{path}: channel {channel} has no subchannel {missing[0]!r}; it has {names}"
+            )
+        chosen = [by_key[k] for k in subchannels]
+    if info.samples < 2:
+        raise SDTError(f"{path}: channel {channel} holds {info.samples} samples; nothing to read")
+    times = data[0] * 1e-6
+    values = data[[1 + s.index for s in chosen]]
+    rate, _, stray = _rates(times)
+    start = float(times[0])
+    note = None
+    if stray > EVEN_TOLERANCE:
+        grid = start + np.arange(len(times)) / rate
+        grid = grid[grid <= times[-1]]
+        values = np.stack([np.interp(grid, times, row) for row in values])
+        note = (
+            f"{Path(path).name} channel {channel}: timestamps stray up to {stray:.1f} sample "
+            f"periods from an even {rate:.2f} Hz grid; resampled onto it (linear interpolation)"
+        )
+    return IdeSignal(str(path), info, tuple(chosen), start, rate, values, note)

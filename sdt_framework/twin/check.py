@@ -1,0 +1,214 @@
+"""``sdt twin check``: the twin of a sensor against what the real device recorded.
+
+After alignment (:mod:`.align`), each axis is compared band by band (third
+octaves from 10 Hz to the device's Nyquist): the device's band RMS, the
+twin's, and the twin's error in dB. A band is *judgeable* only where the
+reference carries information: its band power at least :data:`MARGIN_DB`
+above the reference's own floor there (the median density of its tone-free
+bins within an octave either side, times the bandwidth: a floor that rises
+toward low frequencies is not taken for motion; broadband motion spanning
+more than two octaves is judged conservatively, as floor), and
+the band below the reference's band limit (:data:`REFERENCE_LIMIT` of its
+rate: a 5 kHz piezo channel cannot judge a 2.4 kHz band, whatever its
+numbers say). The summary is the worst judgeable band error and the RMS of
+the judgeable errors. Also reported: the transfer function twin -> device
+(Welch cross-spectra) with its coherence at each judgeable band's strongest
+bin, the noise floors, the harmonic distortion of the dominant tone and the
+samples at full scale.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from scipy import signal
+
+from ..errors import SDTError
+from ..specs import SensorSpec
+from . import spectra
+from .align import Alignment, align
+from .pair import Pair
+
+__all__ = ["MARGIN_DB", "REFERENCE_LIMIT", "CheckResult", "check_twin", "in_sample"]
+
+#: a band is judgeable when the reference stands this far above its own floor
+MARGIN_DB = 10.0
+#: ... and lies below this share of the reference's rate (its front end's band)
+REFERENCE_LIMIT = 0.4
+
+
+@dataclass
+class CheckResult:
+    """Everything ``sdt twin check`` prints, JSON-ready through :meth:`as_dict`."""
+
+    pair: dict[str, Any]
+    alignment: dict[str, Any]
+    bands: list[dict[str, Any]]
+    floors: list[dict[str, Any]]
+    distortion: dict[str, Any]
+    clipped: dict[str, Any]
+    summary: dict[str, Any]
+    spectra: dict[str, Any] = field(repr=False, default_factory=dict)  # for the figures
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready form (the figure arrays left out)."""
+        return {k: v for k, v in vars(self).items() if k != "spectra"}
+
+
+def in_sample(sensor: SensorSpec, pair: Pair) -> bool:
+    """Whether ``sensor`` was fitted on this very file (its provenance names the digest)."""
+    return f"sha256 {pair.digest}" in (sensor.source or "")
+
+
+def _judge(ref_rms: np.ndarray, floor: np.ndarray, bands: np.ndarray, limit: float) -> list:
+    """(judgeable, reason) per axis and band; ``floor`` is the local floor density per band."""
+    floor_rms = np.sqrt(floor * (bands[None, :, 2] - bands[None, :, 0]))
+    above = 20 * np.log10(np.maximum(ref_rms, 1e-30) / floor_rms)
+    out = []
+    for axis_above in above:
+        row = []
+        for band, level in zip(bands, axis_above, strict=True):
+            if band[2] > limit:
+                row.append((False, f"above the reference's band limit ({limit:.0f} Hz)"))
+            elif level < MARGIN_DB:
+                row.append((False, f"reference only {level:.1f} dB above its floor"))
+            else:
+                row.append((True, f"reference {level:.1f} dB above its floor"))
+        out.append(row)
+    return out
+
+
+def _transfer(a: Alignment, bands: np.ndarray, judged: list) -> dict[tuple[int, int], dict]:
+    nperseg = spectra.segment(a.rate_hz, a.twin.shape[1])
+    f, pxy = signal.csd(a.twin, a.device, fs=a.rate_hz, nperseg=nperseg, axis=-1)
+    _, pxx = signal.welch(a.twin, fs=a.rate_hz, nperseg=nperseg, axis=-1)
+    _, coh = signal.coherence(a.twin, a.device, fs=a.rate_hz, nperseg=nperseg, axis=-1)
+    out = {}
+    for i, row in enumerate(judged):
+        for b, (ok, _) in enumerate(row):
+            inside = np.flatnonzero((f >= bands[b, 0]) & (f < bands[b, 2]))
+            if not ok or not len(inside):
+                continue
+            k = inside[np.argmax(pxx[i, inside])]
+            h = pxy[i, k] / pxx[i, k]
+            out[(i, b)] = {
+                "at_hz": float(f[k]),
+                "gain_db": float(20 * np.log10(abs(h))),
+                "phase_deg": float(np.degrees(np.angle(h))),
+                "coherence": float(coh[i, k]),
+            }
+    return out
+
+
+def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
+    """Compare ``sensor``'s twin of ``pair.reference`` with ``pair.device``."""
+    a = align(pair, sensor, seed)
+    ref_rate = pair.reference.rate_hz
+    f_ref, p_ref = spectra.psd(a.reference, ref_rate)
+    f_dev, p_dev = spectra.psd(a.device, a.rate_hz)
+    _, p_twin = spectra.psd(a.twin, a.rate_hz)
+    bands = spectra.third_octaves(10.0, a.rate_hz / 2)
+    limit = REFERENCE_LIMIT * ref_rate
+    ref_floor = spectra.floor_asd(f_ref, p_ref, 10.0, limit)
+    local = spectra.local_floor(f_ref, p_ref, bands)
+    judged = _judge(spectra.band_rms(f_ref, p_ref, bands), local, bands, limit)
+    if not any(ok for row in judged for ok, _ in row):
+        raise SDTError(
+            f"{pair.name}: no band can be judged: on every axis the reference stays within "
+            f"{MARGIN_DB:g} dB of its own floor below its band limit ({limit:.0f} Hz), so it "
+            f"carries no motion to compare (a recording at rest? `sdt validate-noise "
+            f"--recording` checks a noise floor)"
+        )
+    real = spectra.band_rms(f_dev, p_dev, bands)
+    twin = spectra.band_rms(f_dev, p_twin, bands)
+    transfer = _transfer(a, bands, judged)
+    rows, errors = [], []
+    for i, axis in enumerate(pair.device.axes):
+        for b, (ok, reason) in enumerate(judged[i]):
+            error = float(20 * np.log10(twin[i, b] / real[i, b]))
+            rows.append({
+                "axis": axis, "f_lower_hz": float(bands[b, 0]), "f_centre_hz": float(bands[b, 1]),
+                "f_upper_hz": float(bands[b, 2]), "real_rms_g": float(real[i, b]),
+                "twin_rms_g": float(twin[i, b]), "error_db": error, "judgeable": ok,
+                "reason": reason, "transfer": transfer.get((i, b)),
+            })  # fmt: skip
+            if ok:
+                errors.append((abs(error), error, axis, float(bands[b, 1])))
+    floors_hi = a.rate_hz / 4  # below the digital corner of either part
+    dev_floor = spectra.floor_asd(f_dev, p_dev, 10.0, floors_hi)
+    twin_floor = spectra.floor_asd(f_dev, p_twin, 10.0, floors_hi)
+    main = int(np.argmax(a.device.std(axis=1)))
+    f0 = float(f_dev[np.argmax(p_dev[main, 1:]) + 1])
+    worst = max(errors)
+    full = sensor.full_scale_g or np.inf
+    return CheckResult(
+        pair={
+            "file": pair.name,
+            "sha256": pair.digest,
+            "sensor": sensor.name,
+            "in_sample": in_sample(sensor, pair),
+            "reference": {
+                "channel": pair.reference.label,
+                "part": pair.reference.part,
+                "rate_hz": ref_rate,
+            },
+            "device": {
+                "channel": pair.device.label,
+                "part": pair.device.part,
+                "rate_hz": a.rate_hz,
+                "nominal_rate_hz": a.nominal_rate_hz,
+            },
+            "overlap_s": a.device.shape[1] / a.rate_hz,
+            "notes": [n for n in (pair.reference.note, pair.device.note) if n],
+        },
+        alignment={
+            "rate_hz": a.rate_hz,
+            "clock_error_pct": 100 * (a.rate_hz / a.nominal_rate_hz - 1),
+            "delay_s": a.delay_s,
+            "signs": a.signs,
+            "angles_deg": a.angles_deg,
+            "rotation": a.rotation.round(6).tolist(),
+        },
+        bands=rows,
+        floors=[
+            {
+                "axis": axis,
+                "reference_ug": 1e6 * float(r),
+                "twin_ug": 1e6 * float(t),
+                "device_ug": 1e6 * float(d),
+                "twin_error_db": float(20 * np.log10(t / d)),
+            }
+            for axis, r, t, d in zip(
+                pair.device.axes, ref_floor, twin_floor, dev_floor, strict=True
+            )
+        ],
+        distortion={
+            "axis": pair.device.axes[main],
+            "tone_hz": f0,
+            "reference": spectra.thd(f_ref, p_ref[main], f0),
+            "twin": spectra.thd(f_dev, p_twin[main], f0),
+            "device": spectra.thd(f_dev, p_dev[main], f0),
+        },
+        clipped={
+            "full_scale_g": sensor.full_scale_g,
+            "device": int(np.count_nonzero(np.abs(a.device) >= 0.999 * full)),
+            "twin": int(np.count_nonzero(np.abs(a.twin) >= 0.999 * full)),
+        },
+        summary={
+            "judgeable_bands": len(errors),
+            "worst_error_db": worst[1],
+            "worst_axis": worst[2],
+            "worst_band_hz": worst[3],
+            "rms_error_db": float(np.sqrt(np.mean([e[1] ** 2 for e in errors]))),
+        },
+        spectra={
+            "f": f_dev,
+            "device": p_dev,
+            "twin": p_twin,
+            "f_ref": f_ref,
+            "reference": p_ref,
+            "main": main,
+        },
+    )

@@ -1,0 +1,152 @@
+"""A paired recording: the reference and the device signals, each on its own even grid.
+
+From an enDAQ IDE file, the device is the acceleration channel whose sensor
+table names the part the twin models (``ADXL345 ...`` for ``adxl345`` or a
+profile fitted from it), the reference the fastest other acceleration channel
+(the piezo); either can be named by channel id. Only the x/y/z subchannels
+are used (a microphone subchannel is not an axis).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..data.ide import IdeChannel, inspect_ide, is_ide, read_ide
+from ..errors import SDTError
+
+__all__ = ["Pair", "Signal", "load_pair"]
+
+
+@dataclass(frozen=True)
+class Signal:
+    """One sensor's recording of the pair: axes on rows, in g, on an even time grid."""
+
+    label: str
+    part: str | None
+    axes: tuple[str, ...]
+    values: np.ndarray  # float64 (n_axes, n_samples)
+    rate_hz: float
+    start_s: float
+    note: str | None = None
+
+    @property
+    def end_s(self) -> float:
+        """Time of the last sample, s."""
+        return self.start_s + (self.values.shape[1] - 1) / self.rate_hz
+
+
+@dataclass(frozen=True)
+class Pair:
+    """A reference and a device that measured the same vibration on one clock."""
+
+    path: str
+    reference: Signal
+    device: Signal
+    digest: str  # first 12 hex digits of the file's SHA-256 (names the data in provenance)
+
+    @property
+    def name(self) -> str:
+        """The file's name."""
+        return Path(self.path).name
+
+
+def _digest(path: str | os.PathLike[str]) -> str:
+    sha = hashlib.sha256()
+    with open(path, "rb") as handle:
+        for block in iter(lambda: handle.read(1 << 20), b""):
+            sha.update(block)
+    return sha.hexdigest()[:12]
+
+
+def _accelerometers(channels: list[IdeChannel]) -> list[IdeChannel]:
+    return [
+        c
+        for c in channels
+        if any(s.axis and s.quantity.lower() == "acceleration" for s in c.subchannels)
+    ]
+
+
+def _matches(channel: IdeChannel, sensor: str) -> bool:
+    """Whether a part of ``channel`` is the part ``sensor`` models (adxl345 ~ 'ADXL345 ...')."""
+    tokens = {part.split()[0].lower() for part in channel.parts if part.split()}
+    return any(sensor.lower().startswith(token) for token in tokens)
+
+
+def _pick(path: str, channels: list[IdeChannel], sensor: str, device: int | None,
+          reference: int | None) -> tuple[IdeChannel, IdeChannel]:  # fmt: skip
+    listed = ", ".join(f"{c.id} ({', '.join(c.parts) or c.name})" for c in channels)
+    by_id = {c.id: c for c in channels}
+    for given, what in ((device, "device"), (reference, "reference")):
+        if given is not None and given not in by_id:
+            raise SDTError(
+                f"{path}: no acceleration channel {given} for the {what}; it has {listed}"
+            )
+    if device is None:
+        found = [c for c in channels if _matches(c, sensor) and c.id != reference]
+        if len(found) != 1:
+            why = "none" if not found else "more than one"
+            raise SDTError(
+                f"{path}: {why} of the acceleration channels {listed} is the part of "
+                f"{sensor!r}; name it with --device-channel"
+            )
+        device = found[0].id
+    if reference is None:
+        others = [c for c in channels if c.id != device]
+        if not others:
+            raise SDTError(f"{path}: only one acceleration channel ({listed}); no reference")
+        reference = max(others, key=lambda c: c.rate_hz).id
+    if reference == device:
+        raise SDTError(f"{path}: the reference and the device are both channel {device}")
+    return by_id[reference], by_id[device]
+
+
+def _signal(path: str, channel: IdeChannel, axes: list[str]) -> Signal:
+    read = read_ide(path, channel.id, axes)
+    part = ", ".join(channel.parts) or None
+    return Signal(f"channel {channel.id}", part, tuple(axes), read.values, read.rate_hz,
+                  read.start_s, read.note)  # fmt: skip
+
+
+def load_pair(
+    path: str | os.PathLike[str],
+    sensor: str,
+    *,
+    axes: list[str] | None = None,
+    device_channel: int | None = None,
+    reference_channel: int | None = None,
+) -> Pair:
+    """The pair in the IDE file at ``path`` for the twin of ``sensor`` (a profile name)."""
+    path = str(path)
+    if not is_ide(path):
+        raise SDTError(f"{path}: not an enDAQ IDE file (.IDE); give a paired IDE recording")
+    channels = _accelerometers(inspect_ide(path))
+    ref, dev = _pick(path, channels, sensor, device_channel, reference_channel)
+    common = [a for a in "xyz" if {a} <= {s.axis for s in ref.subchannels} & {
+        s.axis for s in dev.subchannels}]  # fmt: skip
+    chosen = axes or common
+    missing = [a for a in chosen if a not in common]
+    if missing or not chosen:
+        raise SDTError(
+            f"{path}: axis {missing[0] if missing else '-'!r} is not on both channels "
+            f"{ref.id} and {dev.id}; they share {', '.join(common) or 'no axis'}"
+        )
+    pair = Pair(path, _signal(path, ref, chosen), _signal(path, dev, chosen), _digest(path))
+    if pair.reference.rate_hz <= pair.device.rate_hz:
+        raise SDTError(
+            f"{path}: the reference (channel {ref.id}, {pair.reference.rate_hz:.0f} Hz) is not "
+            f"faster than the device (channel {dev.id}, {pair.device.rate_hz:.0f} Hz); a twin "
+            f"needs a reference sampled above the device's rate"
+        )
+    start = max(pair.reference.start_s, pair.device.start_s)
+    end = min(pair.reference.end_s, pair.device.end_s)
+    if end - start < 1.0:
+        raise SDTError(
+            f"{path}: the reference and the device overlap for {max(end - start, 0):.2f} s "
+            f"(at least 1 s is needed); they are not one recording"
+        )
+    return pair
