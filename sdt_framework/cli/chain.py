@@ -112,8 +112,15 @@ def validate_noise_command(
     axis: str = typer.Option("x", "--axis", help="Axis of the profile to check: x, y or z."),
     recording: Annotated[
         Path | None,
-        typer.Option("--recording", help="Zero-motion recording of one axis, .csv or .npy."),
+        typer.Option(
+            "--recording",
+            help="Zero-motion recording of one axis, .csv or .npy, or an enDAQ .IDE file "
+            "(the --axis of the channel whose part is --sensor's, or of --channel).",
+        ),
     ] = None,
+    channel: int | None = typer.Option(
+        None, "--channel", help="Channel id in an .IDE recording (default: --sensor's part)."
+    ),
     fs: float | None = typer.Option(
         None, "--fs", help="Rate of the recording, Hz (default: the sensor's rate)."
     ),
@@ -162,6 +169,8 @@ def validate_noise_command(
       sdt validate-noise --sensor adxl345 --recording x_axis.csv --unit lsb --scale 0.0039
 
       sdt validate-noise --sensor adxl357 --windows 4096 --yes --plot noise.png
+
+      sdt validate-noise --sensor adxl345 --recording SSX_Data.IDE --windows 4
     """
     from ..chain import noise_check, plot_noise_check  # imported on use, as in degrade
     from ..chain.allan import allan_seconds
@@ -169,6 +178,7 @@ def validate_noise_command(
     from ..chain.files import load_signal, to_g
     from ..chain.noise_check import zero_motion_cost
     from ..chain.noise_plot import plot_formats
+    from ..data.ide import is_ide
     from ..data.sizes import Cost
     from .allan_table import print_allan_table
     from .guards import check_cost, check_output_file, os_errors
@@ -189,7 +199,9 @@ def validate_noise_command(
             "--windows or --window-length",
         )
         rec = None
-        if recording is not None:
+        if recording is not None and is_ide(recording):
+            rec, fs = _ide_axis(recording, channel, spec.name, axis, fs)
+        elif recording is not None:
             loaded, note = load_signal(recording)
             _note(note)
             rec = to_g(loaded, unit.lower(), scale, str(recording))
@@ -214,6 +226,21 @@ def validate_noise_command(
     print_allan_table(data["allan"], result.sensor, axis)
     if plot is not None:
         console.print(f"figure: {plot}", highlight=False)
+
+
+def _ide_axis(path: Path, channel: int | None, sensor: str, axis: str, fs: float | None):
+    """(samples in g, rate) of ``axis`` of an IDE recording's channel; the rate measured
+    from the timestamps unless --fs is given."""
+    from ..data.ide import inspect_ide, part_channel, read_ide
+
+    if channel is None:
+        channel = part_channel(path, inspect_ide(path), sensor)
+    read = read_ide(path, channel, [axis])
+    _note(read.note)
+    rate = read.rate_hz if fs is None else fs
+    _note(f"{path.name}: channel {channel} axis {axis}, {read.values.shape[1]} samples at "
+          f"{read.rate_hz:.2f} Hz (measured from the timestamps)")  # fmt: skip
+    return read.values[0], rate
 
 
 def register(app: typer.Typer) -> None:

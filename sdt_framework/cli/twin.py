@@ -42,6 +42,9 @@ def check(
     device_channel: int | None = _DEVICE,
     reference_channel: int | None = _REFERENCE,
     all_bands: bool = typer.Option(False, "--all-bands", help="List unjudgeable bands too."),
+    plot: Path | None = typer.Option(
+        None, "--plot", help="Save the spectra and transfer figure here (.png, .pdf, .svg)."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
 ) -> None:
     """Run the pair's reference through the twin of --sensor and compare it with the device.
@@ -53,14 +56,22 @@ def check(
 
     Example:
 
-      sdt twin check SSX66115.IDE --sensor adxl345
+      sdt twin check SSX66115.IDE --sensor adxl345 --plot ssx.png
 
       sdt --sensor-file fitted.toml twin check SSX66115.IDE --sensor adxl345-fitted --json
     """
+    from ..chain.noise_plot import plot_formats
     from ..twin import check_twin
+    from ..twin.plot import plot_check
+    from .guards import check_output_file
 
+    if plot is not None:
+        check_output_file(plot, "--plot", [f".{f}" for f in plot_formats()], [pair])
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel)
     result = check_twin(loaded, spec)
+    if plot is not None:
+        with os_errors(str(plot)):
+            plot_check(result, plot)
     if as_json:
         print_json(result.as_dict())
         return
@@ -105,6 +116,8 @@ def check(
     _say(f"summary: {s['judgeable_bands']} judgeable bands; worst {s['worst_error_db']:+.1f} dB "
          f"({s['worst_axis']}, {s['worst_band_hz']:.0f} Hz band); RMS error "
          f"{s['rms_error_db']:.1f} dB" + (" (in-sample)" if p["in_sample"] else ""))  # fmt: skip
+    if plot is not None:
+        _say(f"figure: {plot}")
 
 
 @app.command("fit")

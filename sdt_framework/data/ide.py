@@ -33,9 +33,13 @@ __all__ = [
     "IdeChannel",
     "IdeSignal",
     "IdeSubchannel",
+    "accelerometers",
     "inspect_ide",
     "is_ide",
+    "matches_part",
+    "part_channel",
     "read_ide",
+    "read_variable",
 ]
 
 #: largest distance (in sample periods) of a timestamp from the fitted line for "even"
@@ -219,3 +223,48 @@ def read_ide(
             f"periods from an even {rate:.2f} Hz grid; resampled onto it (linear interpolation)"
         )
     return IdeSignal(str(path), info, tuple(chosen), start, rate, values, note)
+
+
+def accelerometers(channels: list[IdeChannel]) -> list[IdeChannel]:
+    """The channels with at least one acceleration axis."""
+    return [
+        c
+        for c in channels
+        if any(s.axis and s.quantity.lower() == "acceleration" for s in c.subchannels)
+    ]
+
+
+def part_channel(path: str | os.PathLike[str], channels: list[IdeChannel], sensor: str) -> int:
+    """The acceleration channel whose sensor table names the part ``sensor`` models
+    (``adxl345`` or ``adxl345-fitted`` ~ ``ADXL345 Low-G DC Accelerometer``)."""
+    listed = accelerometers(channels)
+    found = [c for c in listed if matches_part(c, sensor)]
+    if len(found) != 1:
+        names = ", ".join(f"{c.id} ({', '.join(c.parts) or c.name})" for c in listed)
+        why = "none" if not found else "more than one"
+        raise SDTError(
+            f"{path}: {why} of the acceleration channels {names} is the part of {sensor!r}; "
+            f"name the channel"
+        )
+    return found[0].id
+
+
+def matches_part(channel: IdeChannel, sensor: str) -> bool:
+    """Whether a part of ``channel`` is the one ``sensor`` models (by the part's first word)."""
+    tokens = {part.split()[0].lower() for part in channel.parts if part.split()}
+    return any(sensor.lower().startswith(token) for token in tokens)
+
+
+def read_variable(path: str | os.PathLike[str], variable: str | None) -> IdeSignal:
+    """One axis of an IDE file named as a manifest's ``variable``: ``CHANNEL:AXIS`` (``32:x``)."""
+    channel, _, axis = (variable or "").partition(":")
+    if not channel.strip().isdigit() or not axis.strip():
+        found = ", ".join(
+            f"{c.id}:{s.axis}" for c in accelerometers(inspect_ide(path)) for s in c.subchannels
+            if s.axis
+        )  # fmt: skip
+        raise SDTError(
+            f"{path}: an IDE row names its signal as variable = CHANNEL:AXIS (got "
+            f"{variable!r}); this file holds {found}"
+        )
+    return read_ide(path, int(channel), [axis.strip().lower()])

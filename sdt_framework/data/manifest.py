@@ -47,7 +47,7 @@ from .recording import (
     Skipped,
     measurement_groups,
 )
-from .signal_files import read_signal, signal_shape
+from .signal_files import ide_rate, read_signal, signal_shape
 from .tokens import quote
 
 __all__ = ["REQUIRED", "UNITS_TO_G", "open_manifest"]
@@ -187,6 +187,8 @@ def open_manifest(
             continue
         except SignalTypeError as exc:
             raise SignalTypeError(f"{exc} (manifest {manifest} {fields['where']})") from None
+        if fields["file"].suffix.lower() == ".ide":
+            _check_ide_rate(fields, manifest)
         if note:
             notes.append(note)
         key = (fields["machine"], fields["run"], fields["channel"])
@@ -257,3 +259,18 @@ def _refuse_shared_ids(
 def _load_rows(rows: tuple[tuple[Path, str | None, str], ...]) -> np.ndarray:
     parts = [read_signal(file, variable) * UNITS_TO_G[units] for file, variable, units in rows]
     return np.concatenate(parts, axis=0)
+
+
+#: largest relative difference between a manifest's rate and an IDE channel's measured rate
+IDE_RATE_TOLERANCE = 0.001
+
+
+def _check_ide_rate(fields: dict[str, Any], manifest: Path) -> None:
+    """An IDE row's ``sampling_rate_hz`` must be the channel's measured rate (0.1 %)."""
+    measured = ide_rate(fields["file"], fields["variable"])
+    if abs(fields["rate"] / measured - 1) > IDE_RATE_TOLERANCE:
+        raise SDTError(
+            f"{fields['file']}: channel {fields['variable']} runs at {measured:.2f} Hz by its "
+            f"timestamps, the manifest says {fields['rate']:g} Hz (manifest {manifest} "
+            f"{fields['where']}); give the measured rate (`sdt dataset inspect` prints it)"
+        )

@@ -17,13 +17,14 @@ from pathlib import Path
 import numpy as np
 
 from ..dtypes import describe_dtype, is_real
+from ..errors import SDTError
 from .csv_signal import read_csv_signal
 from .recording import DataFileError, SignalTypeError
 from .tokens import brief, quote
 
-__all__ = ["read_signal", "signal_shape"]
+__all__ = ["ide_rate", "read_signal", "signal_shape"]
 
-SUFFIXES = (".csv", ".npy", ".mat")
+SUFFIXES = (".csv", ".npy", ".mat", ".ide")
 
 
 def _orient(file: Path, shape: tuple[int, ...]) -> tuple[int, int]:
@@ -79,6 +80,21 @@ def _real(file: Path, data: np.ndarray) -> np.ndarray:
     return data
 
 
+def _ide(file: Path, variable: str | None):
+    """One axis of an enDAQ IDE file (``variable = CHANNEL:AXIS``), on its even grid."""
+    from .ide import read_variable  # idelib: on use only
+
+    try:
+        return read_variable(file, variable)
+    except SDTError as exc:
+        raise DataFileError(str(exc)) from None
+
+
+def ide_rate(file: Path, variable: str | None) -> float:
+    """The rate of an IDE row's signal, measured from its timestamps."""
+    return _ide(file, variable).rate_hz
+
+
 def signal_shape(file: Path, variable: str | None) -> tuple[tuple[int, int], str | None]:
     """((n_acquisitions, n_samples), note) of a signal file, reading as little as possible.
 
@@ -93,6 +109,9 @@ def signal_shape(file: Path, variable: str | None) -> tuple[tuple[int, int], str
     if suffix == ".csv":
         parsed = read_csv_signal(file, variable)
         return parsed.data.shape, parsed.note  # type: ignore[return-value]
+    if suffix == ".ide":
+        read = _ide(file, variable)
+        return (1, read.values.shape[1]), read.note
     raise DataFileError(f"{file}: unsupported file type {suffix!r}; use {', '.join(SUFFIXES)}")
 
 
@@ -113,6 +132,8 @@ def read_signal(file: Path, variable: str | None) -> np.ndarray:
             raise DataFileError(f"{file}: not a readable MATLAB file ({brief(exc)})") from None
     elif suffix == ".csv":
         return read_csv_signal(file, variable).data  # every value checked finite
+    elif suffix == ".ide":
+        return _finite(file, np.ascontiguousarray(_ide(file, variable).values), "sample", 0)
     else:
         raise DataFileError(f"{file}: unsupported file type {suffix!r}; use {', '.join(SUFFIXES)}")
     data = np.asarray(_real(file, np.asarray(data)), dtype=np.float64)

@@ -80,11 +80,13 @@ def _judge(ref_rms: np.ndarray, floor: np.ndarray, bands: np.ndarray, limit: flo
     return out
 
 
-def _transfer(a: Alignment, bands: np.ndarray, judged: list) -> dict[tuple[int, int], dict]:
+def _transfer(a: Alignment, bands: np.ndarray, judged: list) -> tuple[dict, dict]:
+    """Per judgeable band the transfer twin -> device at its strongest bin; and the arrays."""
     nperseg = spectra.segment(a.rate_hz, a.twin.shape[1])
     f, pxy = signal.csd(a.twin, a.device, fs=a.rate_hz, nperseg=nperseg, axis=-1)
     _, pxx = signal.welch(a.twin, fs=a.rate_hz, nperseg=nperseg, axis=-1)
     _, coh = signal.coherence(a.twin, a.device, fs=a.rate_hz, nperseg=nperseg, axis=-1)
+    arrays = {"f_h": f, "h": pxy / np.where(pxx > 0, pxx, np.inf), "coherence": coh}
     out = {}
     for i, row in enumerate(judged):
         for b, (ok, _) in enumerate(row):
@@ -99,7 +101,7 @@ def _transfer(a: Alignment, bands: np.ndarray, judged: list) -> dict[tuple[int, 
                 "phase_deg": float(np.degrees(np.angle(h))),
                 "coherence": float(coh[i, k]),
             }
-    return out
+    return out, arrays
 
 
 def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
@@ -123,7 +125,7 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
         )
     real = spectra.band_rms(f_dev, p_dev, bands)
     twin = spectra.band_rms(f_dev, p_twin, bands)
-    transfer = _transfer(a, bands, judged)
+    transfer, transfer_arrays = _transfer(a, bands, judged)
     rows, errors = [], []
     for i, axis in enumerate(pair.device.axes):
         for b, (ok, reason) in enumerate(judged[i]):
@@ -210,5 +212,8 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             "f_ref": f_ref,
             "reference": p_ref,
             "main": main,
+            "axes": pair.device.axes,
+            "judged": [b for b in rows if b["judgeable"]],
+            **transfer_arrays,
         },
     )

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..data.ide import IdeChannel, inspect_ide, is_ide, read_ide
+from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
 from ..errors import SDTError
 
 __all__ = ["Pair", "Signal", "load_pair"]
@@ -63,20 +63,6 @@ def _digest(path: str | os.PathLike[str]) -> str:
     return sha.hexdigest()[:12]
 
 
-def _accelerometers(channels: list[IdeChannel]) -> list[IdeChannel]:
-    return [
-        c
-        for c in channels
-        if any(s.axis and s.quantity.lower() == "acceleration" for s in c.subchannels)
-    ]
-
-
-def _matches(channel: IdeChannel, sensor: str) -> bool:
-    """Whether a part of ``channel`` is the part ``sensor`` models (adxl345 ~ 'ADXL345 ...')."""
-    tokens = {part.split()[0].lower() for part in channel.parts if part.split()}
-    return any(sensor.lower().startswith(token) for token in tokens)
-
-
 def _pick(path: str, channels: list[IdeChannel], sensor: str, device: int | None,
           reference: int | None) -> tuple[IdeChannel, IdeChannel]:  # fmt: skip
     listed = ", ".join(f"{c.id} ({', '.join(c.parts) or c.name})" for c in channels)
@@ -87,7 +73,7 @@ def _pick(path: str, channels: list[IdeChannel], sensor: str, device: int | None
                 f"{path}: no acceleration channel {given} for the {what}; it has {listed}"
             )
     if device is None:
-        found = [c for c in channels if _matches(c, sensor) and c.id != reference]
+        found = [c for c in channels if matches_part(c, sensor) and c.id != reference]
         if len(found) != 1:
             why = "none" if not found else "more than one"
             raise SDTError(
@@ -124,7 +110,7 @@ def load_pair(
     path = str(path)
     if not is_ide(path):
         raise SDTError(f"{path}: not an enDAQ IDE file (.IDE); give a paired IDE recording")
-    channels = _accelerometers(inspect_ide(path))
+    channels = accelerometers(inspect_ide(path))
     ref, dev = _pick(path, channels, sensor, device_channel, reference_channel)
     common = [a for a in "xyz" if {a} <= {s.axis for s in ref.subchannels} & {
         s.axis for s in dev.subchannels}]  # fmt: skip
