@@ -102,9 +102,10 @@ def print_table(out: Table) -> None:
         console.print(out)
         return
     headers = [visible(str(column.header)) for column in out.columns]
-    cells = [[visible(str(cell)) for cell in column.cells] for column in out.columns]
+    cells = [[" ".join(visible(str(cell)).split("\n")) for cell in column.cells]
+             for column in out.columns]  # fmt: skip
     if out.title:
         console.print(str(out.title), soft_wrap=True, highlight=False)
     for row in zip(*cells, strict=True):
-        pairs = [f"{header}: {value}" for header, value in zip(headers, row, strict=True)]
+        pairs = [f"{h}: {v}" for h, v in zip(headers, row, strict=True) if v.strip()]
         console.print("  ".join(pairs), soft_wrap=True, highlight=False)
