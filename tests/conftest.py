@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from sdt_framework import build_registry
+from sdt_framework.cli.main import main
 
 FakeDist = Callable[..., Path]
 
@@ -50,3 +51,20 @@ def fake_dist(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[FakeD
 def registry():
     """The installed registry (built-in plugins), shared: a test that adds specs builds its own."""
     return build_registry()
+
+
+@pytest.fixture
+def sdt_main(monkeypatch, capsys):
+    """``sdt_main(*args)``: ``main()`` in this process: (exit status, stdout, stderr)."""
+
+    def run(*args: str) -> tuple[int, str, str]:
+        monkeypatch.setattr(sys, "argv", ["sdt", *args])
+        try:
+            main()
+            code = 0
+        except SystemExit as exc:
+            code = exc.code if isinstance(exc.code, int) else 1
+        out = capsys.readouterr()
+        return code, out.out, out.err
+
+    return run

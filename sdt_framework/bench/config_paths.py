@@ -7,8 +7,9 @@ folder. So sdt writes every path setting relative to the folder that holds the
 file (``data = "../pump/manifest.csv"``), and reads a file it wrote (known by
 its first line) back against that folder. A configuration a user wrote keeps
 its own rule: relative paths are taken from the working directory, as given.
-The identity a results folder is resumed by compares paths made absolute, so a
-folder written before this rule (absolute paths) still resumes.
+The identity a results folder is resumed by compares paths relative to the
+folder (``bench.folder``), so a folder written before this rule (absolute
+paths) still resumes, and a folder moved with its data resumes too.
 """
 
 from __future__ import annotations
@@ -20,7 +21,6 @@ from typing import Any
 __all__ = [
     "PATH_SETTINGS",
     "WRITTEN_HEADERS",
-    "absolute_paths",
     "relative_to",
     "resolve_written",
     "written_by_sdt",
@@ -59,13 +59,4 @@ def resolve_written(settings: dict[str, Any], folder: str | os.PathLike[str]) ->
         value = out.get(name)
         if isinstance(value, str) and not os.path.isabs(value):
             out[name] = os.path.normpath(os.path.join(os.path.abspath(folder), value))
-    return out
-
-
-def absolute_paths(settings: dict[str, Any]) -> dict[str, Any]:
-    """``settings`` with every path setting made absolute (from the working directory)."""
-    out = dict(settings)
-    for name in PATH_SETTINGS:
-        if isinstance(out.get(name), str):
-            out[name] = os.path.abspath(out[name])
     return out

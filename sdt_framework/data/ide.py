@@ -102,6 +102,7 @@ class IdeSignal:
     rate_hz: float
     values: np.ndarray  # float64 (n_subchannels, n_samples)
     note: str | None  # set when the samples were resampled
+    rate_sd_hz: float = float("nan")  # standard error of rate_hz (timestamps about their line)
 
     @property
     def times(self) -> np.ndarray:
@@ -134,14 +135,18 @@ def _axis(name: str) -> str | None:
     return first if first in ("x", "y", "z") else None
 
 
-def _rates(times: np.ndarray) -> tuple[float, float, float]:
-    """(slope rate, median rate, largest distance of a timestamp from the line in periods)."""
-    if len(times) < 2:
-        return float("nan"), float("nan"), 0.0
+def _rates(times: np.ndarray) -> tuple[float, float, float, float]:
+    """(slope rate, median rate, largest distance of a timestamp from the line in periods,
+    standard error of the slope rate from the timestamps' scatter about the line)."""
+    if len(times) < 3:
+        return float("nan"), float("nan"), 0.0, float("nan")
     index = np.arange(len(times), dtype=np.float64)
     slope, intercept = np.polyfit(index, times, 1)
-    stray = float(np.max(np.abs(times - (slope * index + intercept))) / slope)
-    return 1.0 / float(slope), 1.0 / float(np.median(np.diff(times))), stray
+    residual = times - (slope * index + intercept)
+    stray = float(np.max(np.abs(residual)) / slope)
+    slope_se = np.sqrt(residual @ residual / (len(times) - 2) / np.sum((index - index.mean()) ** 2))
+    rate = 1.0 / float(slope)
+    return rate, 1.0 / float(np.median(np.diff(times))), stray, float(slope_se * rate**2)
 
 
 def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
@@ -153,7 +158,7 @@ def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
         else np.empty((rows, 0))  # a channel that recorded nothing
     )
     times = data[0] * 1e-6  # microseconds
-    rate, median, _ = _rates(times)
+    rate, median, _, _ = _rates(times)
     subs = tuple(
         IdeSubchannel(
             i,
@@ -211,7 +216,7 @@ def read_ide(
         raise SDTError(f"{path}: channel {channel} holds {info.samples} samples; nothing to read")
     times = data[0] * 1e-6
     values = data[[1 + s.index for s in chosen]]
-    rate, _, stray = _rates(times)
+    rate, _, stray, rate_sd = _rates(times)
     start = float(times[0])
     note = None
     if stray > EVEN_TOLERANCE:
@@ -222,7 +227,7 @@ def read_ide(
             f"{Path(path).name} channel {channel}: timestamps stray up to {stray:.1f} sample "
             f"periods from an even {rate:.2f} Hz grid; resampled onto it (linear interpolation)"
         )
-    return IdeSignal(str(path), info, tuple(chosen), start, rate, values, note)
+    return IdeSignal(str(path), info, tuple(chosen), start, rate, values, note, rate_sd)
 
 
 def accelerometers(channels: list[IdeChannel]) -> list[IdeChannel]:

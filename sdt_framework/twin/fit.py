@@ -56,11 +56,11 @@ class FitResult:
 
 
 def _rate(pair: Pair) -> dict[str, Any]:
-    n = pair.device.values.shape[1]
-    # the even grid's rate; its standard error from the timestamps' scatter (<= 1 period)
-    rate = pair.device.rate_hz
-    return {"value": rate, "uncertainty": rate / (n * np.sqrt(12)) * 2,
-            "from": f"timestamps of {pair.device.label} ({n} samples)"}  # fmt: skip
+    """The device's rate: least-squares slope of its timestamps, with that slope's standard
+    error (NaN for a pair built from arrays, which carry no timestamps)."""
+    dev = pair.device
+    return {"value": dev.rate_hz, "uncertainty": dev.rate_sd_hz,
+            "from": f"timestamps of {dev.label} ({dev.values.shape[1]} samples)"}  # fmt: skip
 
 
 def _noise(pair: Pair, sensor: SensorSpec) -> dict[str, dict[str, Any]]:
@@ -161,10 +161,15 @@ def fit_twin(pair: Pair, base: SensorSpec, name: str | None = None) -> FitResult
         table["digital_cutoff_hz"] = round(float(clocked.digital_cutoff_hz), 3)
     if stages:
         table["stages"] = list(table.get("stages", [])) + stages
-    lines = [f"{k} = {v['value']:.6g}" + (f" +- {v['uncertainty']:.2g}" if v["uncertainty"]
+    lines = [f"{k} = {v['value']:.6g}" + (f" +- {v['uncertainty']:.2g}" if _known(v["uncertainty"])
              else "") + f"  ({v['from']})" for k, v in fitted.items()]  # fmt: skip
     lines += [f"{k}: kept at {base.name}'s value ({why})" for k, why in kept.items()]
     return FitResult(fitted, kept, table, lines)
+
+
+def _known(value: float | None) -> bool:
+    """Whether an uncertainty was determined (not None, not NaN, not zero)."""
+    return value is not None and bool(np.isfinite(value)) and value != 0
 
 
 def profile_toml(result: FitResult) -> str:

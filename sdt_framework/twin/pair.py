@@ -33,6 +33,7 @@ class Signal:
     rate_hz: float
     start_s: float
     note: str | None = None
+    rate_sd_hz: float = float("nan")  # standard error of the measured rate
 
     @property
     def end_s(self) -> float:
@@ -95,7 +96,7 @@ def _signal(path: str, channel: IdeChannel, axes: list[str]) -> Signal:
     read = read_ide(path, channel.id, axes)
     part = ", ".join(channel.parts) or None
     return Signal(f"channel {channel.id}", part, tuple(axes), read.values, read.rate_hz,
-                  read.start_s, read.note)  # fmt: skip
+                  read.start_s, read.note, read.rate_sd_hz)  # fmt: skip
 
 
 def load_pair(

@@ -1,5 +1,6 @@
 """Shared fixtures of the reliability tests: a small benchmark, a folder nobody may write,
-and ``sdt`` run as a user runs it (a real process: exit status and stderr as printed)."""
+and ``sdt`` run as a user runs it (a real process: exit status and stderr as printed; the
+in-process ``sdt_main`` is in tests/conftest.py)."""
 
 from __future__ import annotations
 
@@ -13,7 +14,6 @@ from typing import Any
 import pytest
 
 from sdt_framework.bench.config import BenchmarkConfig
-from sdt_framework.cli.main import main
 
 #: Motor-2 only (15 runs), 1.5 s acquisitions (2 windows per channel), 2 channels, 1 sensor.
 SMALL: dict[str, Any] = {
@@ -65,23 +65,6 @@ def read_only_dir(tmp_path) -> Path:
     folder.mkdir()
     folder.chmod(0o555)
     return folder
-
-
-@pytest.fixture
-def sdt_main(monkeypatch, capsys):
-    """``sdt_main(*args)``: ``main()`` in this process: (exit status, stdout, stderr)."""
-
-    def run(*args: str) -> tuple[int, str, str]:
-        monkeypatch.setattr(sys, "argv", ["sdt", *args])
-        try:
-            main()
-            code = 0
-        except SystemExit as exc:
-            code = exc.code if isinstance(exc.code, int) else 1
-        out = capsys.readouterr()
-        return code, out.out, out.err
-
-    return run
 
 
 @pytest.fixture
