@@ -146,11 +146,11 @@ def fit(
     """
     from ..io import atomic_write_text
     from ..twin.fit import fit_twin, profile_toml
+    from .guards import check_output_file
 
-    if out.suffix.lower() != ".toml":
-        raise SDTError(f"--out {out}: a sensor file ends in .toml")
     if out.exists():
         raise SDTError(f"--out {out} exists; choose a new file (nothing is overwritten)")
+    check_output_file(out, "--out", [".toml"], [pair])  # suffix, folder, writable: before work
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel)
     result = fit_twin(loaded, spec, name)
     with os_errors(str(out)):

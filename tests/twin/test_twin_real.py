@@ -98,6 +98,10 @@ def test_check_reports_the_real_devices_band_rms(registry):
         (["twin", "check", "{data}/SSX_Data.IDE", "--sensor", "adxl357"], "none of the"),
         (["twin", "fit", "{data}/SSX_Data.IDE", "--sensor", "wilcoxon-786b10",
           "--device-channel", "32", "--out", "{tmp}/w.toml"], "cannot be fitted"),
+        (["twin", "fit", "{data}/SSX66115.IDE", "--sensor", "adxl345", "--out", "{tmp}/f.txt"],
+         "unsupported extension '.txt'; use one of .toml"),
+        (["twin", "fit", "{data}/SSX66115.IDE", "--sensor", "adxl345", "--out",
+          "{data}/SSX_Data.IDE"], "exists; choose a new file"),
     ],
 )  # fmt: skip
 def test_bad_input_is_one_line(sdt_main, tmp_path, args, words):
