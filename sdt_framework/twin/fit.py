@@ -57,7 +57,9 @@ class FitResult:
 
 def _rate(pair: Pair) -> dict[str, Any]:
     """The device's rate: least-squares slope of its timestamps, with that slope's standard
-    error (NaN for a pair built from arrays, which carry no timestamps)."""
+    error (NaN for a pair built from arrays, which carry no timestamps). The error treats the
+    timestamps' scatter about the line as independent: a clock step or a drift (a channel
+    that was resampled says so in its note) makes it optimistic."""
     dev = pair.device
     return {"value": dev.rate_hz, "uncertainty": dev.rate_sd_hz,
             "from": f"timestamps of {dev.label} ({dev.values.shape[1]} samples)"}  # fmt: skip
