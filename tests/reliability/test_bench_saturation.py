@@ -35,18 +35,23 @@ def _manifest(folder: Path) -> Path:
     return manifest
 
 
-def test_saturated_recordings_are_named_with_their_share(sdt_main, tmp_path):
-    manifest = _manifest(tmp_path)
-    out = tmp_path / "out"
+def _run(sdt_main, manifest: Path, folder: Path) -> tuple[str, dict]:
+    """``sdt benchmark --quick`` of adxl345 on ``manifest``: stderr, summary.json's entry."""
+    out = folder / "out"
     code, _, err = sdt_main(
         "benchmark", "--data", str(manifest), "--quick", "--sensors", "adxl345",
-        "--classifiers", "lr", "--out", str(out), "--cache-dir", str(tmp_path / "cache"),
+        "--classifiers", "lr", "--out", str(out), "--cache-dir", str(folder / "cache"),
     )  # fmt: skip
     assert code == 0, err
+    return err, json.loads((out / "summary.json").read_text())["saturation"]["adxl345"]
+
+
+def test_saturated_recordings_are_named_with_their_share(sdt_main, tmp_path):
+    manifest = _manifest(tmp_path)
+    err, entry = _run(sdt_main, manifest, tmp_path)
     # a sine of amplitude A spends 1 - (2/pi) asin(16/A) of its time beyond +-16 g; the
     # chain's low-passes barely touch 20 Hz (|H| > 0.999), so A stays 20 g
     expected = 1 - 2 / math.pi * math.asin(16 / AMPLITUDE)
-    entry = json.loads((out / "summary.json").read_text())["saturation"]["adxl345"]
     assert entry["full_scale_g"] == 16.0
     assert entry["recordings"] == 6 and entry["recordings_above_limit"] == 3
     assert {w["recording_id"] for w in entry["worst"]} == {f"m/fault{i}/ch1" for i in range(3)}
@@ -68,12 +73,6 @@ def test_quiet_recordings_give_no_warning(sdt_main, tmp_path):
     with manifest.open("a") as handle:
         for index in range(3):
             handle.write(f"quiet{index}.npy,{FS},m,quiet,{index + 1},quiet{index},ch1\n")
-    out = tmp_path / "out"
-    code, _, err = sdt_main(
-        "benchmark", "--data", str(manifest), "--quick", "--sensors", "adxl345",
-        "--classifiers", "lr", "--out", str(out), "--cache-dir", str(tmp_path / "cache"),
-    )  # fmt: skip
-    assert code == 0, err
+    err, entry = _run(sdt_main, manifest, tmp_path)
     assert "full scale" not in err
-    entry = json.loads((out / "summary.json").read_text())["saturation"]["adxl345"]
     assert entry["fraction"] == 0.0 and entry["worst"] == []
