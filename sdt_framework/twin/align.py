@@ -14,12 +14,16 @@
   the overlapping samples (mean removed), with only the twin axes that carry
   motion as regressors (standard deviation at least a tenth of the largest):
   a shaker drives one axis, and an axis at its noise floor determines
-  nothing. ``R``, the orthogonal matrix whose active columns are nearest M's
-  (the polar factor ``U V^T`` of their SVD; quiet axes completed from their
-  unit vectors by Gram-Schmidt), holds the axis signs and the mounting's
-  rotation and is applied to the twin; the gains stay out of it: they are the
-  twin's to answer for and so stay in the comparison. With one axis, R is the
-  sign.
+  nothing. A quiet axis keeps its unit column, and its share is taken out of
+  the device before the fit: the twin's quiet axis still carries some of the
+  shaker's tone (the reference's own cross-axis motion), and regressing the
+  device on the active axes alone would count that share twice. ``R``,
+  the orthogonal matrix whose active columns are nearest M's (the polar
+  factor ``U V^T`` of their SVD; quiet axes completed from their unit
+  vectors by Gram-Schmidt), holds the axis signs and the mounting's
+  rotation and is applied to the twin; the gains stay out of it: they are
+  the twin's to answer for and so stay in the comparison. With one axis, R
+  is the sign.
 """
 
 from __future__ import annotations
@@ -149,7 +153,9 @@ def align(pair: Pair, sensor: SensorSpec, seed: int = 0) -> Alignment:
     centred_dev = device - device.mean(axis=1, keepdims=True)
     spread = centred_twin.std(axis=1)
     active = np.flatnonzero(spread >= ACTIVE_SHARE * spread.max())
-    fitted, *_ = np.linalg.lstsq(centred_twin[active].T, centred_dev.T, rcond=None)
+    quiet = np.setdiff1d(np.arange(len(spread)), active)
+    target = centred_dev - np.eye(len(spread))[:, quiet] @ centred_twin[quiet]
+    fitted, *_ = np.linalg.lstsq(centred_twin[active].T, target.T, rcond=None)
     rotation = _rotation(fitted.T, active, len(spread))
     ref_t = ref.start_s + np.arange(ref.values.shape[1]) / ref.rate_hz
     reference = ref.values[:, (ref_t >= start - delay) & (ref_t <= end - delay)]
