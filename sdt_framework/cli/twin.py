@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import typer
 
 from ..errors import SDTError
@@ -19,14 +20,25 @@ _REFERENCE = typer.Option(None, "--reference-channel", help="Channel id of the r
 
 
 def _load(ctx: typer.Context, pair: Path, sensor: str, axes: str | None, device: int | None,
-          reference: int | None):  # fmt: skip
+          reference: int | None, reference_scale: float = 1.0):  # fmt: skip
+    from dataclasses import replace
+
     from ..twin import load_pair
 
+    if not (np.isfinite(reference_scale) and reference_scale > 0):
+        raise SDTError(f"--reference-scale {reference_scale}: give a positive finite factor")
     spec = registry(ctx).sensor(sensor)
     chosen = [a.strip().lower() for a in axes.split(",")] if axes else None
     with os_errors(str(pair)):
-        return load_pair(pair, spec.name, axes=chosen, device_channel=device,
-                         reference_channel=reference), spec  # fmt: skip
+        loaded = load_pair(pair, spec.name, axes=chosen, device_channel=device,
+                           reference_channel=reference)  # fmt: skip
+    if reference_scale != 1.0:
+        ref = loaded.reference
+        note = f"reference values multiplied by {reference_scale:g} (--reference-scale)"
+        note = "; ".join(filter(None, (ref.note, note)))
+        scaled = replace(ref, values=ref.values * reference_scale, note=note)
+        loaded = replace(loaded, reference=scaled)
+    return loaded, spec
 
 
 def _say(line: str) -> None:
@@ -42,6 +54,12 @@ def check(
     device_channel: int | None = _DEVICE,
     reference_channel: int | None = _REFERENCE,
     all_bands: bool = typer.Option(False, "--all-bands", help="List unjudgeable bands too."),
+    reference_scale: float = typer.Option(
+        1.0,
+        "--reference-scale",
+        help="Multiply the reference by this factor first: correct a reference whose "
+        "calibration the check found off (its 'calibration' line).",
+    ),
     plot: Path | None = typer.Option(
         None, "--plot", help="Save the spectra and transfer figure here (.png, .pdf, .svg)."
     ),
@@ -58,6 +76,8 @@ def check(
 
       sdt twin check SSX66115.IDE --sensor adxl345 --plot ssx.png
 
+      sdt twin check DAQ12006_000005.IDE --sensor adxl357 --reference-scale 1.626
+
       sdt --sensor-file fitted.toml twin check SSX66115.IDE --sensor adxl345-fitted --json
     """
     from ..chain.noise_plot import plot_formats
@@ -67,7 +87,8 @@ def check(
 
     if plot is not None:
         check_output_file(plot, "--plot", [f".{f}" for f in plot_formats()], [pair])
-    loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel)
+    loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel,
+                         reference_scale)  # fmt: skip
     result = check_twin(loaded, spec)
     if plot is not None:
         with os_errors(str(plot)):
@@ -104,15 +125,21 @@ def check(
             f"{f['twin_ug']:.0f}",
             f"{f['device_ug']:.0f}",
             f"{f['twin_error_db']:+.1f}",
+            "yes" if f["judgeable"] else f"no: {f['reason']}",
         ]
         for f in result.floors
     ]
     table("noise floor (ug/sqrt(Hz), median away from tones)",
-          ["axis", "reference", "twin", "device", "twin error dB"], floors)  # fmt: skip
+          ["axis", "reference", "twin", "device", "twin error dB", "judgeable"],
+          floors)  # fmt: skip
     d, c = result.distortion, result.clipped
     _say(f"THD of the {d['tone_hz']:.1f} Hz tone on {d['axis']}: reference {d['reference']:.2%}, "
          f"twin {d['twin']:.2%}, device {d['device']:.2%}; samples at full scale: device "
          f"{c['device']}, twin {c['twin']}")  # fmt: skip
+    k = result.calibration
+    gain = f"; device/twin gain {k['tone_gain']:.3f} at {k['tone_hz']:.1f} Hz" if k["tone_gain"] \
+        else ""  # fmt: skip
+    _say(f"calibration: the device's mean vector is {k['static_g']:.3f} g{gain}: {k['verdict']}")
     _say(f"summary: {s['judgeable_bands']} judgeable bands; worst {s['worst_error_db']:+.1f} dB "
          f"({s['worst_axis']}, {s['worst_band_hz']:.0f} Hz band); RMS error "
          f"{s['rms_error_db']:.1f} dB" + (" (in-sample)" if p["in_sample"] else ""))  # fmt: skip

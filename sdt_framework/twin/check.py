@@ -15,6 +15,20 @@ the judgeable errors. Also reported: the transfer function twin -> device
 (Welch cross-spectra) with its coherence at each judgeable band's strongest
 bin, the noise floors, the harmonic distortion of the dominant tone and the
 samples at full scale.
+
+Two readings say what the pair itself can and cannot tell:
+
+- A noise floor is judged only where the reference's floor lies at least
+  :data:`MARGIN_DB` below the device's: the twin's floor is the reference's
+  plus the modelled noise, so a reference as noisy as the part (a 100 g
+  piezo beside an ADXL357) shows its own floor, not the twin's error.
+- A DC-coupled device at rest on its mount reads gravity: the length of its
+  mean vector, against 1 g, checks its own static calibration without the
+  reference (one orientation cannot separate sensitivity from 0 g offset,
+  hence the :data:`STATIC_TOLERANCE`). When that holds and the twin still
+  disagrees in gain at the dominant tone, the disagreement is the
+  reference's calibration, not the part's, and ``sdt twin fit`` does not
+  write it into the profile.
 """
 
 from __future__ import annotations
@@ -31,12 +45,21 @@ from . import spectra
 from .align import Alignment, align
 from .pair import Pair
 
-__all__ = ["MARGIN_DB", "REFERENCE_LIMIT", "CheckResult", "check_twin", "in_sample"]
+__all__ = [
+    "MARGIN_DB",
+    "REFERENCE_LIMIT",
+    "STATIC_TOLERANCE",
+    "CheckResult",
+    "check_twin",
+    "in_sample",
+]
 
 #: a band is judgeable when the reference stands this far above its own floor
 MARGIN_DB = 10.0
 #: ... and lies below this share of the reference's rate (its front end's band)
 REFERENCE_LIMIT = 0.4
+#: a device whose mean vector is within this share of 1 g has a sound static calibration
+STATIC_TOLERANCE = 0.05
 
 
 @dataclass
@@ -49,6 +72,7 @@ class CheckResult:
     floors: list[dict[str, Any]]
     distortion: dict[str, Any]
     clipped: dict[str, Any]
+    calibration: dict[str, Any]
     summary: dict[str, Any]
     spectra: dict[str, Any] = field(repr=False, default_factory=dict)  # for the figures
 
@@ -102,6 +126,42 @@ def _transfer(a: Alignment, bands: np.ndarray, judged: list) -> tuple[dict, dict
                 "coherence": float(coh[i, k]),
             }
     return out, arrays
+
+
+def _floor_judged(reference: float, device: float) -> dict[str, Any]:
+    """Whether the twin's noise floor can be judged: the reference's must lie well below."""
+    below = float(20 * np.log10(device / reference))
+    if below >= MARGIN_DB:
+        return {"judgeable": True, "reason": f"reference floor {below:.1f} dB below the device's"}
+    where = f"only {below:.1f} dB below" if below >= 0 else f"{-below:.1f} dB above"
+    return {"judgeable": False, "reason": f"reference floor {where} the device's"}
+
+
+def _calibration(a: Alignment, transfer: dict, main: int) -> dict[str, Any]:
+    """The device's static reading (|mean vector|, g) and the gain at the dominant tone."""
+    static = float(np.linalg.norm(a.device.mean(axis=1)))
+    tone = max(
+        (v for (i, _), v in transfer.items() if i == main),
+        key=lambda v: v["coherence"],
+        default=None,
+    )
+    gain = None if tone is None else float(10 ** (tone["gain_db"] / 20))
+    sound = abs(static - 1.0) <= STATIC_TOLERANCE
+    off = gain is not None and abs(gain - 1.0) > STATIC_TOLERANCE
+    if not sound:
+        verdict = "the device does not read 1 g at rest (AC-coupled, or its calibration is off)"
+    elif off:
+        verdict = "the device reads gravity right: the gain disagreement is the reference's"
+    else:
+        verdict = "the device reads gravity right and agrees with the reference in gain"
+    return {
+        "static_g": static,
+        "static_sound": sound,
+        "tone_gain": gain,
+        "tone_hz": None if tone is None else tone["at_hz"],
+        "reference_off": bool(sound and off),
+        "verdict": verdict,
+    }
 
 
 def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
@@ -181,6 +241,7 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
                 "twin_ug": 1e6 * float(t),
                 "device_ug": 1e6 * float(d),
                 "twin_error_db": float(20 * np.log10(t / d)),
+                **_floor_judged(float(r), float(d)),
             }
             for axis, r, t, d in zip(
                 pair.device.axes, ref_floor, twin_floor, dev_floor, strict=True
@@ -198,6 +259,7 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             "device": int(np.count_nonzero(np.abs(a.device) >= 0.999 * full)),
             "twin": int(np.count_nonzero(np.abs(a.twin) >= 0.999 * full)),
         },
+        calibration=_calibration(a, transfer, main),
         summary={
             "judgeable_bands": len(errors),
             "worst_error_db": worst[1],

@@ -100,6 +100,13 @@ def _gain(pair: Pair, base: SensorSpec) -> tuple[dict[str, Any] | None, str]:
     rows = [b for b in check.bands if b["judgeable"] and b["axis"] == axis]
     if len(rows) < MIN_BANDS:
         return None, f"only {len(rows)} judgeable band(s) on any axis (at least {MIN_BANDS})"
+    if check.calibration["reference_off"]:
+        k = check.calibration
+        return None, (
+            f"the device reads gravity as {k['static_g']:.3f} g, so the x{k['tone_gain']:.3f} "
+            f"gain disagreement at {k['tone_hz']:.0f} Hz is the reference's calibration, "
+            f"not the part's"
+        )
     real = np.array([b["real_rms_g"] for b in rows])
     twin = np.array([b["twin_rms_g"] for b in rows])
     gain = float(real @ twin / (twin @ twin))  # least squares, real ~ gain x twin

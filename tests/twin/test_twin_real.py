@@ -128,3 +128,19 @@ def test_fit_writes_a_profile_that_runs_and_knows_where_it_came_from(sdt_main, t
         "--sensor-file", str(out), "validate-noise", "--sensor", "adxl345-fitted"
     )
     assert code == 0, err
+
+
+def test_the_adxl357_pair_names_the_reference_as_the_one_off(registry):
+    """DAQ12006: the ADXL357 reads gravity as 1 g (its raw mean vector, read here with idelib)
+    and 1.6 x the piezo at the tone: the piezo's calibration is off, and its 100 g floor lies
+    above the ADXL357's, so no floor there is judged."""
+    raw = _raw("DAQ12006_000005.IDE", 80)[1:4]
+    static = float(np.linalg.norm(raw.mean(axis=1)))
+    assert static == pytest.approx(1.0, abs=0.01)
+    result = check_twin(load_pair(DATA / "DAQ12006_000005.IDE", "adxl357"),
+                        registry.sensor("adxl357"))  # fmt: skip
+    k = result.calibration
+    assert k["static_g"] == pytest.approx(static, abs=0.005)  # the aligned overlap's mean
+    assert 1.5 < k["tone_gain"] < 1.75 and k["reference_off"]
+    assert not any(f["judgeable"] for f in result.floors)
+    assert all(f["reference_ug"] > f["device_ug"] for f in result.floors)
