@@ -48,7 +48,9 @@ def _say(line: str) -> None:
 @app.command("check")
 def check(
     ctx: typer.Context,
-    pair: Path = typer.Argument(..., help="Paired recording: an enDAQ .IDE file."),
+    pair: Path = typer.Argument(
+        ..., help="Paired recording: an enDAQ .IDE file, or a pair .toml naming two signals."
+    ),
     sensor: str = _SENSOR,
     axes: str | None = _AXES,
     device_channel: int | None = _DEVICE,
@@ -150,7 +152,9 @@ def check(
 @app.command("fit")
 def fit(
     ctx: typer.Context,
-    pair: Path = typer.Argument(..., help="Paired recording: an enDAQ .IDE file."),
+    pair: Path = typer.Argument(
+        ..., help="Paired recording: an enDAQ .IDE file, or a pair .toml naming two signals."
+    ),
     sensor: str = typer.Option(..., "--sensor", help="Base profile to start from."),
     out: Path = typer.Option(..., "--out", help="Sensor file to write (.toml, must be new)."),
     name: str | None = typer.Option(None, "--name", help="Profile name (default NAME-fitted)."),

@@ -7,12 +7,8 @@ timestamps, and a sensor table naming the parts. What sdt needs from one:
 - the channels, their subchannels (axes), units and part names, and the rate
   *measured* from the timestamps (a MEMS part's real output rate differs from
   its nominal ODR by a few percent: 3134 Hz for an ADXL345 set to 3200 Hz);
-- one channel's samples in g, on an even time grid. The rate is the slope of
-  a least-squares line through the timestamps. When a timestamp strays from
-  that line by more than :data:`EVEN_TOLERANCE` sample periods (a clock step,
-  a gap), the samples are resampled onto the even grid by linear
-  interpolation at their recorded times (the chain's own sampling rule, SPEC
-  stage 3), and a note says so; otherwise they are used as recorded.
+- one channel's samples in g, on an even time grid at the measured rate
+  (:mod:`.timebase`: resampled with a note when the timestamps stray).
 
 EBML parsing is idelib's (MIT), never done here.
 """
@@ -27,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SDTError
+from .timebase import EVEN_TOLERANCE, measured_rate, on_even_grid
 
 __all__ = [
     "EVEN_TOLERANCE",
@@ -41,9 +38,6 @@ __all__ = [
     "read_ide",
     "read_variable",
 ]
-
-#: largest distance (in sample periods) of a timestamp from the fitted line for "even"
-EVEN_TOLERANCE = 1.0
 
 
 @dataclass(frozen=True)
@@ -135,20 +129,6 @@ def _axis(name: str) -> str | None:
     return first if first in ("x", "y", "z") else None
 
 
-def _rates(times: np.ndarray) -> tuple[float, float, float, float]:
-    """(slope rate, median rate, largest distance of a timestamp from the line in periods,
-    standard error of the slope rate from the timestamps' scatter about the line)."""
-    if len(times) < 3:
-        return float("nan"), float("nan"), 0.0, float("nan")
-    index = np.arange(len(times), dtype=np.float64)
-    slope, intercept = np.polyfit(index, times, 1)
-    residual = times - (slope * index + intercept)
-    stray = float(np.max(np.abs(residual)) / slope)
-    slope_se = np.sqrt(residual @ residual / (len(times) - 2) / np.sum((index - index.mean()) ** 2))
-    rate = 1.0 / float(slope)
-    return rate, 1.0 / float(np.median(np.diff(times))), stray, float(slope_se * rate**2)
-
-
 def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
     session = channel.getSession()
     rows = 1 + len(channel.subchannels)
@@ -158,7 +138,7 @@ def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
         else np.empty((rows, 0))  # a channel that recorded nothing
     )
     times = data[0] * 1e-6  # microseconds
-    rate, median, _, _ = _rates(times)
+    rate, median, _, _ = measured_rate(times)
     subs = tuple(
         IdeSubchannel(
             i,
@@ -216,18 +196,9 @@ def read_ide(
         raise SDTError(f"{path}: channel {channel} holds {info.samples} samples; nothing to read")
     times = data[0] * 1e-6
     values = data[[1 + s.index for s in chosen]]
-    rate, _, stray, rate_sd = _rates(times)
-    start = float(times[0])
-    note = None
-    if stray > EVEN_TOLERANCE:
-        grid = start + np.arange(len(times)) / rate
-        grid = grid[grid <= times[-1]]
-        values = np.stack([np.interp(grid, times, row) for row in values])
-        note = (
-            f"{Path(path).name} channel {channel}: timestamps stray up to {stray:.1f} sample "
-            f"periods from an even {rate:.2f} Hz grid; resampled onto it (linear interpolation)"
-        )
-    return IdeSignal(str(path), info, tuple(chosen), start, rate, values, note, rate_sd)
+    even = on_even_grid(times, values, f"{Path(path).name} channel {channel}")
+    return IdeSignal(str(path), info, tuple(chosen), even.start_s, even.rate_hz, even.values,
+                     even.note, even.rate_sd_hz)  # fmt: skip
 
 
 def accelerometers(channels: list[IdeChannel]) -> list[IdeChannel]:

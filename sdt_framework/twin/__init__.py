@@ -15,7 +15,8 @@ from __future__ import annotations
 
 from .check import CheckResult, check_twin
 from .fit import FitResult, fit_twin, profile_toml
-from .pair import Pair, Signal, load_pair
+from .pair import load_pair
+from .signals import Pair, Signal
 
 __all__ = [
     "CheckResult",

@@ -11,49 +11,13 @@ from __future__ import annotations
 
 import hashlib
 import os
-from dataclasses import dataclass
-from pathlib import Path
-
-import numpy as np
 
 from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
 from ..errors import SDTError
+from .pair_toml import is_pair_toml, load_toml_pair
+from .signals import Pair, Signal
 
 __all__ = ["Pair", "Signal", "load_pair"]
-
-
-@dataclass(frozen=True)
-class Signal:
-    """One sensor's recording of the pair: axes on rows, in g, on an even time grid."""
-
-    label: str
-    part: str | None
-    axes: tuple[str, ...]
-    values: np.ndarray  # float64 (n_axes, n_samples)
-    rate_hz: float
-    start_s: float
-    note: str | None = None
-    rate_sd_hz: float = float("nan")  # standard error of the measured rate
-
-    @property
-    def end_s(self) -> float:
-        """Time of the last sample, s."""
-        return self.start_s + (self.values.shape[1] - 1) / self.rate_hz
-
-
-@dataclass(frozen=True)
-class Pair:
-    """A reference and a device that measured the same vibration on one clock."""
-
-    path: str
-    reference: Signal
-    device: Signal
-    digest: str  # first 12 hex digits of the file's SHA-256 (names the data in provenance)
-
-    @property
-    def name(self) -> str:
-        """The file's name."""
-        return Path(self.path).name
 
 
 def _digest(path: str | os.PathLike[str]) -> str:
@@ -107,10 +71,17 @@ def load_pair(
     device_channel: int | None = None,
     reference_channel: int | None = None,
 ) -> Pair:
-    """The pair in the IDE file at ``path`` for the twin of ``sensor`` (a profile name)."""
+    """The pair at ``path`` for the twin of ``sensor`` (a profile name): an IDE file, or a
+    TOML pair file naming two signals (:mod:`.pair_toml`)."""
     path = str(path)
+    if is_pair_toml(path):
+        if device_channel is not None or reference_channel is not None:
+            raise SDTError(f"{path}: a TOML pair names its signals; channel options are for IDE")
+        return _checked(load_toml_pair(path, axes))
     if not is_ide(path):
-        raise SDTError(f"{path}: not an enDAQ IDE file (.IDE); give a paired IDE recording")
+        raise SDTError(
+            f"{path}: not an enDAQ IDE file (.IDE) nor a pair file (.toml); give a paired recording"
+        )
     channels = accelerometers(inspect_ide(path))
     ref, dev = _pick(path, channels, sensor, device_channel, reference_channel)
     common = [a for a in "xyz" if {a} <= {s.axis for s in ref.subchannels} & {
@@ -122,12 +93,20 @@ def load_pair(
             f"{path}: axis {missing[0] if missing else '-'!r} is not on both channels "
             f"{ref.id} and {dev.id}; they share {', '.join(common) or 'no axis'}"
         )
-    pair = Pair(path, _signal(path, ref, chosen), _signal(path, dev, chosen), _digest(path))
+    return _checked(
+        Pair(path, _signal(path, ref, chosen), _signal(path, dev, chosen), _digest(path))
+    )
+
+
+def _checked(pair: Pair) -> Pair:
+    """``pair`` if the reference is faster than the device and they overlap at least 1 s."""
+    path = pair.path
     if pair.reference.rate_hz <= pair.device.rate_hz:
         raise SDTError(
-            f"{path}: the reference (channel {ref.id}, {pair.reference.rate_hz:.0f} Hz) is not "
-            f"faster than the device (channel {dev.id}, {pair.device.rate_hz:.0f} Hz); a twin "
-            f"needs a reference sampled above the device's rate"
+            f"{path}: the reference ({pair.reference.label}, {pair.reference.rate_hz:.0f} Hz) "
+            f"is not faster than the device ({pair.device.label}, "
+            f"{pair.device.rate_hz:.0f} Hz); a twin needs a reference sampled above the "
+            f"device's rate"
         )
     start = max(pair.reference.start_s, pair.device.start_s)
     end = min(pair.reference.end_s, pair.device.end_s)
