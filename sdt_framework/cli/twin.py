@@ -108,9 +108,12 @@ def check(
         _say(f"note: {note}")
     angles = ", ".join(f"{x} {d:.2f} deg" for x, d in zip(loaded.device.axes, a["angles_deg"],
                                                           strict=True))  # fmt: skip
+    mounting = f"signs {a['signs']}, axis angles {angles}" if a["rotation_estimated"] else (
+        f"axes kept as mounted (device and twin correlate {a['correlation']:.2f}: no shared "
+        f"motion to align on)")  # fmt: skip
     _say(f"alignment: device rate {a['rate_hz']:.2f} Hz ({a['clock_error_pct']:+.2f} % from "
-         f"{p['device']['nominal_rate_hz']:g}), delay {1e3 * a['delay_s']:+.3f} ms, signs "
-         f"{a['signs']}, axis angles {angles}")  # fmt: skip
+         f"{p['device']['nominal_rate_hz']:g}), delay {1e3 * a['delay_s']:+.3f} ms, "
+         f"{mounting}")  # fmt: skip
     rows = [
         [b["axis"], f"{b['f_lower_hz']:.0f}-{b['f_upper_hz']:.0f}", f"{b['real_rms_g']:.4g}",
          f"{b['twin_rms_g']:.4g}", f"{b['error_db']:+.1f}",

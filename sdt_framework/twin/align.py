@@ -23,7 +23,11 @@
   vectors by Gram-Schmidt), holds the axis signs and the mounting's
   rotation and is applied to the twin; the gains stay out of it: they are
   the twin's to answer for and so stay in the comparison. With one axis, R
-  is the sign.
+  is the sign. An axis also counts as carrying motion only if some device
+  axis correlates with it by at least :data:`MIN_CORRELATION`: at rest the
+  twin's axes carry only noise, and a rotation fitted to noise is noise. A
+  pair with no such axis determines no rotation: the axes are kept as
+  mounted, and the alignment says so.
 """
 
 from __future__ import annotations
@@ -37,10 +41,12 @@ from ..chain import degrade
 from ..specs import SensorSpec
 from .pair import Pair
 
-__all__ = ["ACTIVE_SHARE", "Alignment", "align", "at_rate"]
+__all__ = ["ACTIVE_SHARE", "MIN_CORRELATION", "Alignment", "align", "at_rate"]
 
 #: a twin axis whose spread is at least this share of the largest one determines its column
 ACTIVE_SHARE = 0.1
+#: below this correlation of device and twin on the main axis, no rotation is estimated
+MIN_CORRELATION = 0.5
 
 
 @dataclass(frozen=True)
@@ -54,6 +60,7 @@ class Alignment:
     twin: np.ndarray  # aligned twin on the device grid over the overlap
     device: np.ndarray  # device samples over the overlap
     reference: np.ndarray  # reference samples over the overlap (its own rate)
+    correlation: float = 1.0  # best of the main twin axis with any device axis
 
     @property
     def signs(self) -> list[int]:
@@ -152,12 +159,19 @@ def align(pair: Pair, sensor: SensorSpec, seed: int = 0) -> Alignment:
     centred_twin = shifted - shifted.mean(axis=1, keepdims=True)
     centred_dev = device - device.mean(axis=1, keepdims=True)
     spread = centred_twin.std(axis=1)
-    active = np.flatnonzero(spread >= ACTIVE_SHARE * spread.max())
-    quiet = np.setdiff1d(np.arange(len(spread)), active)
-    target = centred_dev - np.eye(len(spread))[:, quiet] @ centred_twin[quiet]
-    fitted, *_ = np.linalg.lstsq(centred_twin[active].T, target.T, rcond=None)
-    rotation = _rotation(fitted.T, active, len(spread))
+    n = len(spread)
+    corr = np.abs(np.corrcoef(centred_twin, centred_dev)[:n, n:])  # twin j vs device i
+    correlation = float(corr.max(axis=1)[main])
+    active = np.flatnonzero(
+        (spread >= ACTIVE_SHARE * spread.max()) & (corr.max(axis=1) >= MIN_CORRELATION)
+    )  # axes that carry motion the device shares
+    rotation = np.eye(n)
+    if len(active):
+        quiet = np.setdiff1d(np.arange(n), active)
+        target = centred_dev - np.eye(n)[:, quiet] @ centred_twin[quiet]
+        fitted, *_ = np.linalg.lstsq(centred_twin[active].T, target.T, rcond=None)
+        rotation = _rotation(fitted.T, active, n)
     ref_t = ref.start_s + np.arange(ref.values.shape[1]) / ref.rate_hz
     reference = ref.values[:, (ref_t >= start - delay) & (ref_t <= end - delay)]
     return Alignment(dev.rate_hz, float(sensor.sampling_rate_hz), delay, rotation,
-                     rotation @ shifted, device, reference)  # fmt: skip
+                     rotation @ shifted, device, reference, correlation)  # fmt: skip

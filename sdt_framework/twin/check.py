@@ -42,7 +42,7 @@ from scipy import signal
 from ..errors import SDTError
 from ..specs import SensorSpec
 from . import spectra
-from .align import Alignment, align
+from .align import MIN_CORRELATION, Alignment, align
 from .pair import Pair
 
 __all__ = [
@@ -58,6 +58,8 @@ __all__ = [
 MARGIN_DB = 10.0
 #: ... and lies below this share of the reference's rate (its front end's band)
 REFERENCE_LIMIT = 0.4
+#: the tone's transfer must be this coherent before its gain is read as a calibration
+COHERENT = 0.98
 #: a device whose mean vector is within this share of 1 g has a sound static calibration
 STATIC_TOLERANCE = 0.05
 
@@ -141,7 +143,7 @@ def _calibration(a: Alignment, transfer: dict, main: int) -> dict[str, Any]:
     """The device's static reading (|mean vector|, g) and the gain at the dominant tone."""
     static = float(np.linalg.norm(a.device.mean(axis=1)))
     tone = max(
-        (v for (i, _), v in transfer.items() if i == main),
+        (v for (i, _), v in transfer.items() if i == main and v["coherence"] >= COHERENT),
         key=lambda v: v["coherence"],
         default=None,
     )
@@ -232,6 +234,8 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             "signs": a.signs,
             "angles_deg": a.angles_deg,
             "rotation": a.rotation.round(6).tolist(),
+            "correlation": a.correlation,
+            "rotation_estimated": bool(a.correlation >= MIN_CORRELATION),
         },
         bands=rows,
         floors=[

@@ -144,3 +144,14 @@ def test_the_adxl357_pair_names_the_reference_as_the_one_off(registry):
     assert 1.5 < k["tone_gain"] < 1.75 and k["reference_off"]
     assert not any(f["judgeable"] for f in result.floors)
     assert all(f["reference_ug"] > f["device_ug"] for f in result.floors)
+
+
+def test_a_pair_at_rest_keeps_its_axes_as_mounted(registry):
+    """XS5E25D40 is at rest (1 g on z, no shaker): no twin axis correlates with the device
+    by 0.5, so no rotation is fitted to noise (which gave 28-40 degree 'angles')."""
+    pair = load_pair(DATA / "XS5E25D40.IDE", "adxl357")
+    result = check_twin(pair, registry.sensor("adxl357"))
+    a = result.alignment
+    assert not a["rotation_estimated"]
+    assert np.array_equal(np.array(a["rotation"]), np.eye(3))
+    assert a["correlation"] < 0.5
