@@ -99,7 +99,8 @@ def _judge(ref_rms: np.ndarray, floor: np.ndarray, bands: np.ndarray, limit: flo
             if band[2] > limit:
                 row.append((False, f"above the reference's band limit ({limit:.0f} Hz)"))
             elif level < MARGIN_DB:
-                row.append((False, f"reference only {level:.1f} dB above its floor"))
+                where = f"only {level:.1f} dB above" if level >= 0 else f"{-level:.1f} dB below"
+                row.append((False, f"reference {where} its floor"))
             else:
                 row.append((True, f"reference {level:.1f} dB above its floor"))
         out.append(row)
