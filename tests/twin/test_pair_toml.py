@@ -87,3 +87,17 @@ def test_bad_pair_file_is_one_line(written, sdt_main, edit, words):
     assert code == 2, err
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: ") and words in lines[0], err
+
+
+def test_a_pair_without_motion_says_why_nothing_is_judged(tmp_path, sdt_main):
+    rng = np.random.default_rng(4)
+    np.save(tmp_path / "ref.npy", 1e-4 * rng.normal(size=(1, 20_000)))  # 4 s of white floor
+    np.save(tmp_path / "dev.npy", 1e-4 * rng.normal(size=(1, 12_800)))
+    (tmp_path / "rest.toml").write_text(
+        '[reference]\nfile = "ref.npy"\naxes = ["x"]\nrate_hz = 5000\n\n'
+        '[device]\nfile = "dev.npy"\naxes = ["x"]\nrate_hz = 3200\n'
+    )
+    code, _, err = sdt_main("twin", "check", str(tmp_path / "rest.toml"), "--sensor", "adxl345")
+    assert code == 2, err
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "no band can be judged" in lines[0] and "floor" in lines[0], err
