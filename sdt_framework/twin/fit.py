@@ -17,11 +17,14 @@ Fitted (each with its standard uncertainty and the data it came from):
   decade) is reported: a profile's noise is white, so a slope is stated, not
   modelled.
 
-Not determined, left at the base profile's values and said so: the filter
-corners (a 5 kHz reference judges up to 2 kHz, where the mechanical and analog
-corners of these parts barely act), full scale and resolution (datasheet
-settings), and the axis alignment (the mounting's, not the part's: reported
-by ``check``).
+- **anti-alias corner** (``analog_cutoff_hz``) jointly with the gain, where
+  the strong judgeable bands reach the corner (:mod:`.fit_corner`); the gain
+  then comes from the same joint fit.
+
+Not determined, left at the base profile's values and said so: the
+mechanical corner (a 5 kHz reference judges up to 2 kHz, far below these
+parts' resonances), full scale and resolution (datasheet settings), and the
+axis alignment (the mounting's, not the part's: reported by ``check``).
 """
 
 from __future__ import annotations
@@ -36,7 +39,8 @@ from ..errors import SDTError
 from ..specs import SensorSpec
 from . import spectra
 from .align import at_rate
-from .check import check_twin
+from .check import CheckResult, check_twin
+from .fit_corner import fit_corner
 from .pair import Pair
 
 __all__ = ["MIN_BANDS", "FitResult", "fit_twin", "profile_toml"]
@@ -87,12 +91,8 @@ def _noise(pair: Pair, sensor: SensorSpec) -> dict[str, dict[str, Any]]:
     return out
 
 
-def _gain(pair: Pair, base: SensorSpec) -> tuple[dict[str, Any] | None, str]:
+def _gain(pair: Pair, check: CheckResult) -> tuple[dict[str, Any] | None, str]:
     """The scale error of the axis with the most judgeable bands, or None and why not."""
-    try:
-        check = check_twin(pair, base)
-    except SDTError as exc:
-        return None, str(exc).split(": ", 1)[-1][:90] + "..."
     counts = {
         a: sum(b["judgeable"] and b["axis"] == a for b in check.bands) for a in pair.device.axes
     }
@@ -139,13 +139,27 @@ def fit_twin(pair: Pair, base: SensorSpec, name: str | None = None) -> FitResult
         }  # fmt: skip
     kept = {
         "mech_cutoff_hz": "the judgeable bands end below it",
-        "analog_cutoff_hz": "not separable from the gain with these bands",
+        "analog_cutoff_hz": "",
         "full_scale_g": "a datasheet setting",
         "adc_bits": "a datasheet setting",
         "alignment": "the mounting's, not the part's (see sdt twin check)",
     }
     stages: list[dict[str, Any]] = []
-    gain, why = _gain(pair, base)
+    try:
+        check = check_twin(pair, base)
+    except SDTError as exc:
+        check, why = None, str(exc).split(": ", 1)[-1][:90] + "..."
+        kept["analog_cutoff_hz"] = why
+    gain = None
+    if check is not None:
+        gain, why = _gain(pair, check)
+        corner, joint, why_corner = fit_corner(pair, base, check)
+        if corner is None:
+            kept["analog_cutoff_hz"] = why_corner
+        else:
+            del kept["analog_cutoff_hz"]
+            fitted["analog_cutoff_hz"] = corner
+            gain = joint if gain is not None else None
     if gain is None:
         kept["scale"] = why
     else:
@@ -166,6 +180,8 @@ def fit_twin(pair: Pair, base: SensorSpec, name: str | None = None) -> FitResult
     }
     if louder:  # axes more than 10 % noisier than the quietest get their own figure
         table["per_axis"] = {a: {"noise_density_ug_rthz": round(v, 2)} for a, v in louder.items()}
+    if "analog_cutoff_hz" in fitted:
+        table["analog_cutoff_hz"] = round(fitted["analog_cutoff_hz"]["value"], 1)
     if clocked.digital_cutoff_hz is not None:
         table["digital_cutoff_hz"] = round(float(clocked.digital_cutoff_hz), 3)
     if stages:
