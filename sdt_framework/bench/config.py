@@ -69,6 +69,22 @@ class BenchmarkConfig(BaseModel):
         description="Sensor axis each channel is mounted on, e.g. {ch3 = 'z'} (default x): "
         "a part's per-axis noise follows it.",
     )
+    transfer: list[str] | None = Field(
+        default=None,
+        description="Cross-chain runs, each 'TRAIN -> TEST': train on one chain's features, "
+        "test on another's, e.g. 'wilcoxon-786b10 -> adxl345,adxl357', 'reference -> *', "
+        "or a mix 'wilcoxon-786b10+adxl345 -> adxl345'.",
+    )
+    sample: Literal["channel", "node"] | None = Field(
+        default=None,
+        description="'channel' (default, the paper's): every channel's windows are samples; "
+        "'node': one sample per window per triaxial node (its axes' features concatenated).",
+    )
+    nodes: dict[str, list[str]] | None = Field(
+        default=None,
+        description="Triaxial nodes by name, each three channels mapped in `axes`, e.g. "
+        "{de = ['ch1', 'ch2', 'ch3']} (default: one node of the channels in `axes`).",
+    )
     classifiers: list[str] | None = Field(default=None, description="Classifiers (all).")
     features: str = Field(default="paper8", description="Feature set, e.g. 'paper8+env_bpfo'.")
     feature_dtype: Literal["float16", "float32"] | None = Field(
@@ -108,6 +124,22 @@ class BenchmarkConfig(BaseModel):
             raise ValueError("must name at least one entry (or be left out for all)")
         if value is not None and len(set(value)) != len(value):
             raise ValueError(f"lists a name twice: {value}")
+        return value
+
+    @field_validator("sample")
+    @classmethod
+    def _sample(cls, value: str | None) -> str | None:
+        return None if value == "channel" else value  # the default, spelled out
+
+    @field_validator("transfer")
+    @classmethod
+    def _transfer(cls, value: list[str] | None) -> list[str] | None:
+        if value is not None and not value:
+            raise ValueError("must name at least one 'TRAIN -> TEST' pair (or be left out)")
+        for pair in value or ():
+            if pair.count("->") != 1:
+                raise ValueError(f"{pair!r} is not 'TRAIN -> TEST' (e.g. 'wilcoxon-786b10 -> "
+                                 f"adxl345')")  # fmt: skip
         return value
 
     @field_validator("jobs")

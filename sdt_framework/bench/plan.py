@@ -28,9 +28,11 @@ from ..features import resolve_feature_set, samples_for
 from ..registry import Registry
 from ..specs import ClassifierSpec, FeatureSetSpec, SensorSpec
 from .config import BenchmarkConfig
+from .node_samples import Node, resolve_nodes
 from .nodes import find_nodes, node_sensors
 from .scenarios import Run, check_allocation, load_allocation, rule_allocation
 from .sensor_set import default_reference, default_sensor_names, screen_sensors
+from .transfer import Transfer, parse_transfers
 
 __all__ = ["Plan", "plan_benchmark"]
 
@@ -52,6 +54,10 @@ class Plan:
     reference: str = "wilcoxon-786b10"
     #: recording id -> its node's other two axes, for sensors with a node stage (cross-axis)
     nodes: dict[str, tuple[Recording, Recording]] = field(default_factory=dict)
+    #: cross-chain pairs (``[benchmark] transfer``), run beside the ordinary runs
+    transfers: list[Transfer] = field(default_factory=list)
+    #: triaxial nodes classified as one sample per window (``sample = "node"``)
+    sample_nodes: list[Node] = field(default_factory=list)
 
 
 def _pick(names: list[str] | None, lookup: Callable[[str], Any], everything: list) -> list:
@@ -85,7 +91,19 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     if sensors is None:
         sensors = _resolve_sensors(default_sensor_names(rates), registry)
     _select(list(config.axes) or None, {r.channel for r in everything}, "channel(s) in axes")
+    reference = config.reference or default_reference(rates)
+    transfers = _transfers(config, registry, reference, sensors)
+    sensors += [
+        registry.sensor(n) for n in _chains(transfers) if n not in {s.name for s in sensors}
+    ]
     sensors, skipped_sensors = screen_sensors(sensors, recordings, config.axes)
+    for pair in transfers:
+        for name in (*pair.train, pair.test):
+            if name in skipped_sensors:
+                raise SDTError(
+                    f"transfer {pair.label!r}: {name} cannot simulate this data "
+                    f"({skipped_sensors[name]}); drop the pair"
+                )
     _check_rates(recordings, sensors, config)
 
     runs = sorted(
@@ -108,6 +126,13 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     recordings = [r for r in recordings if (r.machine, r.run) in needed]
     users = node_sensors(sensors, registry)
     nodes = find_nodes(recordings, everything, config.axes, users) if users else {}
+    if config.nodes and config.sample != "node":
+        raise SDTError(
+            "[benchmark] nodes names the nodes of sample = 'node'; set it, or drop nodes"
+        )
+    sample_nodes = (
+        resolve_nodes(config.axes, config.nodes, recordings) if config.sample == "node" else []
+    )
     data = None if config.data is None else os.path.abspath(config.data)  # one spelling
     key_source = json.dumps(
         [dataset.name, data, config.dataset_options], sort_keys=True, default=str
@@ -123,9 +148,24 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
         allocation,
         skipped,
         skipped_sensors,
-        config.reference or default_reference(rates),
+        reference,
         nodes,
+        transfers,
+        sample_nodes,
     )
+
+
+def _transfers(
+    config: BenchmarkConfig, registry: Registry, reference: str, sensors: list[SensorSpec]
+) -> list[Transfer]:
+    if not config.transfer:
+        return []
+    return parse_transfers(config.transfer, registry.sensor, reference, [s.name for s in sensors])
+
+
+def _chains(transfers: list[Transfer]) -> list[str]:
+    """Every chain the pairs name, in order of first mention."""
+    return list(dict.fromkeys(n for t in transfers for n in (*t.train, t.test)))
 
 
 def _resolve_sensors(names: list[str], registry: Registry) -> list[SensorSpec]:

@@ -2,7 +2,10 @@
 
 ``results`` has one row per run (dataset, machine, scenario, sensor,
 feature_set, classifier, repeat, unit (-1: the nominal profile), seed,
-macro_f1, n_train, n_test, fit_seconds, status, error); ``per_class``,
+macro_f1, n_train, n_test, fit_seconds, status, error, and what it trained
+and tested on: train_sensor, test_sensor, node; ``sensor`` is the row's
+label: the sensor, ``TRAIN -> TEST`` for a transfer, ``... @ NODE`` for a
+node); ``per_class``,
 ``confusion`` and ``per_recording`` (confusion counts per test recording) are
 long tables keyed by the same run columns. ``table4`` is mean +/- SD (sample
 SD, ddof=1) of Macro F1 with scenario blocks, sensor rows and machine x
@@ -43,7 +46,19 @@ RUN_COLUMNS = [
     "unit",
     "seed",
 ]
-RESULT_COLUMNS = [*RUN_COLUMNS, "macro_f1", "n_train", "n_test", "fit_seconds", "status", "error"]
+#: what a row trained and tested on: the sensor itself for ordinary runs (transfer and node
+#: runs carry them in their labels); node: None for channel samples
+CHAIN_COLUMNS = ["train_sensor", "test_sensor", "node"]
+RESULT_COLUMNS = [
+    *RUN_COLUMNS,
+    "macro_f1",
+    "n_train",
+    "n_test",
+    "fit_seconds",
+    "status",
+    "error",
+    *CHAIN_COLUMNS,
+]
 SCENARIO_TITLES = {
     "forward": "Experiment A. Forward extrapolation",
     "backward": "Experiment B. Backward extrapolation",
@@ -70,6 +85,9 @@ def tidy(runs: Iterable[RunResult]) -> tuple[pd.DataFrame, pd.DataFrame, pd.Data
                 "fit_seconds": run.fit_seconds,
                 "status": run.status,
                 "error": run.error,
+                "train_sensor": run.labels.get("train_sensor", keys["sensor"]),
+                "test_sensor": run.labels.get("test_sensor", keys["sensor"]),
+                "node": run.labels.get("node"),
             }
         )
         per_class.extend({**keys, **entry} for entry in run.per_class)

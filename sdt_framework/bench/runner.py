@@ -16,30 +16,26 @@ resumes and gives the results an uninterrupted run would have given.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import os
 import time
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
 
 import pandas as pd
 
 from ..data.cache import default_cache_dir
 from ..edge.quantise import quantise_features
 from ..io import ensure_writable_dir
-from ..seeding import derive_seed
-from ..specs import ClassifierSpec, SensorSpec
-from .classify import RunResult, RunTask, run_classifier
+from .classify import RunResult, run_classifier
 from .execute import check_scheduler_address, open_executor
 from .featurize import FeatureBlock, FeatureJob, featurize_recording
 from .folder import claim_results_folder
 from .plan import Plan, plan_benchmark
 from .saturation import saturation_table
 from .store import load_finished, store_finished
+from .tasks import plan_tasks
 
 __all__ = ["BenchmarkResult", "Plan", "plan_benchmark", "preflight", "run_benchmark"]
 
@@ -65,24 +61,6 @@ class BenchmarkResult:
     seconds: dict[str, float] = field(default_factory=dict)
     saturation: pd.DataFrame | None = None  # samples at full scale per (sensor, recording)
     cache_dir: str = ""  # the feature cache used (this machine's)
-
-
-def _run_key(
-    plan: Plan, labels: dict[str, Any], sensor: SensorSpec, clf: ClassifierSpec, part: pd.DataFrame
-) -> str:
-    parts = [
-        plan.dataset_key,
-        labels,
-        sensor.content_hash(),
-        clf.content_hash(),
-        plan.feature_set.content_hash(),
-        plan.config.window_s,
-        plan.config.settle_s,
-        part[["run", "side"]].to_numpy().tolist(),
-    ]
-    if plan.config.axes:  # channel -> axis changes a part's noise (left out when unset: keys stay)
-        parts.append(sorted(plan.config.axes.items()))
-    return hashlib.sha256(json.dumps(parts, sort_keys=True, default=str).encode()).hexdigest()[:24]
 
 
 def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
@@ -127,57 +105,6 @@ def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
     out = pd.concat(frames, ignore_index=True)
     out["severity"] = out["severity"].astype("Int64")
     return out
-
-
-def _tasks(plan: Plan, features: pd.DataFrame, done: set[str]):
-    names = list(plan.feature_set.feature_names)
-    config = plan.config
-    for (machine, scenario), part in plan.allocation.groupby(["machine", "scenario"], sort=True):
-        if (machine, scenario) in plan.skipped:
-            continue
-        side = dict(zip(part["run"], part["side"], strict=True))
-        classes = tuple(sorted(part["condition"].unique()))
-        code = {c: i for i, c in enumerate(classes)}
-        rows = features[(features["machine"] == machine) & features["run"].isin(side)]
-        by = ["sensor", "repeat"] if config.units is None else ["sensor", "unit", "repeat"]
-        for group, sub in rows.groupby(by, sort=True):
-            sensor_name, repeat = group[0], group[-1]
-            is_train = sub["run"].map(side).eq("train").to_numpy()
-            x = sub[names].to_numpy()
-            y = sub["condition"].map(code).to_numpy()
-            sensor = next(s for s in plan.sensors if s.name == sensor_name)
-            for clf in plan.classifiers:
-                seed = derive_seed(config.seed, "classifier", int(repeat), clf.name)
-                labels = {
-                    "dataset": plan.dataset.name,
-                    "machine": machine,
-                    "scenario": scenario,
-                    "sensor": sensor_name,
-                    "feature_set": plan.feature_set.name,
-                    "classifier": clf.name,
-                    "repeat": int(repeat),
-                    "seed": seed,
-                }
-                if config.units is not None:  # nominal runs keep their keys
-                    labels["unit"] = int(group[1])
-                key = _run_key(plan, labels, sensor, clf, part)
-                yield (
-                    key,
-                    RunTask(
-                        key,
-                        labels,
-                        clf,
-                        seed,
-                        classes,
-                        x[is_train],
-                        y[is_train],
-                        x[~is_train],
-                        y[~is_train],
-                        sub["recording_id"].to_numpy()[~is_train],
-                    )
-                    if key not in done
-                    else None,
-                )
 
 
 def preflight(plan: Plan, out_dir: str | Path) -> Path:
@@ -257,7 +184,7 @@ def run_benchmark(
 
         start = time.perf_counter()
         previous = load_finished(runs_dir, warn)
-        planned = list(_tasks(plan, features, set(previous)))
+        planned = list(plan_tasks(plan, features, set(previous)))
         todo = [task for _, task in planned if task is not None]
         finished = {key: previous[key] for key, task in planned if task is None}
         report("runs", len(finished), len(planned))

@@ -137,6 +137,19 @@ def benchmark(
         help="Comma-separated sensor names; a part with a mode as adxl355\\[range=8g,odr=4000] "
         "(default: the reference, adxl345, adxl357).",
     ),
+    transfer: list[str] | None = typer.Option(
+        None,
+        "--transfer",
+        help="Cross-chain runs 'TRAIN -> TEST' (repeatable): train on one chain, test on "
+        "another, e.g. 'wilcoxon-786b10 -> adxl345,adxl357', 'reference -> *', or a mix "
+        "'wilcoxon-786b10+adxl345 -> adxl345'.",
+    ),
+    sample: str | None = typer.Option(
+        None,
+        "--sample",
+        help="channel (default, the paper's) or node: one sample per window per triaxial node "
+        "([benchmark] axes, nodes).",
+    ),
     classifiers: str | None = typer.Option(None, "--classifiers", help="Comma-separated."),
     features: str | None = typer.Option(None, "--features", help="Feature set, e.g. paper8."),
     feature_dtype: str | None = typer.Option(
@@ -191,6 +204,8 @@ def benchmark(
       sdt benchmark --data /data/NLN-EMP --out results/nln --jobs 2
 
       sdt benchmark --quick --units 5
+
+      sdt benchmark --quick --transfer "wilcoxon-786b10 -> adxl345,adxl357"
     """
     # Imported here so that `sdt --help` and the listing commands start fast.
     from ..bench.config import load_config
@@ -209,6 +224,8 @@ def benchmark(
         "allocation": allocation,
         "repeats": repeats,
         "units": units,
+        "transfer": transfer or None,
+        "sample": sample,
         "seed": seed,
         "jobs": jobs,
         "backend": backend,

@@ -10,6 +10,7 @@ from typing import Any
 
 from ..errors import SDTError
 from ..io import atomic_write_text
+from .deployment import deployment_blocks
 from .document import Block, Code, Heading, Items, Paragraph, Table
 from .edge import edge_blocks
 from .exploration import exploration_blocks
@@ -158,6 +159,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
         blocks += [Heading("Failed runs", 2), failed_table(folder.failed)]
     blocks += _saturation(folder)
     blocks += unit_blocks(folder)
+    blocks += deployment_blocks(folder, registry)
     blocks += exploration_blocks(folder.path)
     blocks += edge_blocks(folder, registry)
     blocks.append(Heading("Figures", 2))
