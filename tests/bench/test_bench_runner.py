@@ -86,7 +86,17 @@ def test_resume_redoes_only_missing_runs(small_config, registry, tmp_path):
 
 
 def test_dask_cluster_gives_the_local_results(small_config, registry, tmp_path):
+    """Including transfer pairs and node samples, which build their runs from the same
+    features."""
     from distributed import LocalCluster
+
+    more = {
+        "classifiers": ["lr", "rf"],
+        "transfer": ["wilcoxon-786b10 -> adxl345"],
+        "channels": ["ch1", "ch2", "ch4"],
+        "axes": {"ch1": "x", "ch2": "y", "ch4": "z"},
+        "sample": "node",
+    }
 
     with LocalCluster(
         n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
@@ -97,10 +107,11 @@ def test_dask_cluster_gives_the_local_results(small_config, registry, tmp_path):
             backend="dask",
             scheduler=cluster.scheduler_address,
             cache_dir=str(tmp_path / "dask-cache"),
-            classifiers=["lr", "rf"],
+            **more,
         )
         _, on_dask = run(config, registry, tmp_path / "dask")
-    _, local = run(small_config(classifiers=["lr", "rf"]), registry, tmp_path / "local")
+    _, local = run(small_config(**more), registry, tmp_path / "local")
+    assert {"wilcoxon-786b10 -> adxl345", "adxl345 @ node"} <= set(local["sensor"])
     pd.testing.assert_frame_equal(
         on_dask.drop(columns="fit_seconds"), local.drop(columns="fit_seconds")
     )

@@ -139,3 +139,24 @@ def test_bad_pairs_and_nodes_are_one_line_before_any_work(sdt_main, tmp_path, ar
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: ") and words in lines[0], err
     assert not out.exists()  # before any work
+
+
+def test_transfer_and_nodes_resume_and_draw_units(small_config, registry, tmp_path):
+    """With --units the pair trains on unit k of its chain and tests on unit k of the other;
+    a second run of the same configuration resumes every run and featurises nothing."""
+    config = small_config(
+        units=2, transfer=["adxl345 -> adxl345", "wilcoxon-786b10 -> adxl345"],
+        channels=["ch1", "ch2", "ch4"], axes={"ch1": "x", "ch2": "y", "ch4": "z"},
+        sample="node", classifiers=["lr"], repeats=1,
+    )  # fmt: skip
+    first = run_benchmark(plan_benchmark(config, registry), tmp_path / "out")
+    results = tidy(first.runs)[0]
+    keys = ["machine", "scenario", "classifier", "repeat", "unit"]
+    ordinary = results[results["sensor"] == "adxl345"].set_index(keys)["macro_f1"]
+    same = results[results["sensor"] == "adxl345 -> adxl345"].set_index(keys)["macro_f1"]
+    assert sorted(set(results["unit"])) == [0, 1]
+    assert same.sort_index().equals(ordinary.sort_index())
+    again = run_benchmark(plan_benchmark(config, registry), tmp_path / "out")
+    assert again.runs_computed == 0 and again.runs_resumed == len(first.runs)
+    assert again.features_computed == 0
+    assert tidy(again.runs)[0]["macro_f1"].equals(results["macro_f1"])
