@@ -13,6 +13,8 @@ The estimate is deliberately simple (and printed as an estimate):
 - the sum is divided by the processes that can run at once,
   ``min(--jobs, CPU cores)``; runs already stored in the results folder are
   not counted;
+- transfer pairs and node samples (``sample = "node"``) add runs: a pair's
+  training set is its chains' windows, a node's its x channel's;
 - ``--units`` multiplies the runs, and the draws of a sensor with tolerances
   (one without shares unit 0's);
 - memory: the process itself, plus per feature block (one recording x sensor
@@ -157,6 +159,11 @@ def _draws(sensor: SensorSpec, repeats: int, units: int | None) -> int:
     return (repeats if noisy else 1) * drawn
 
 
+def _groups(plan: Plan) -> list[tuple[tuple[str, ...], str]]:
+    """(training chains, test chain) of every run group: each sensor, then each transfer."""
+    return [((s.name,), s.name) for s in plan.sensors] + [(t.train, t.test) for t in plan.transfers]
+
+
 def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
     """Size, estimated wall time, peak memory and disk of ``plan``; ``stored_runs`` are done.
 
@@ -183,17 +190,24 @@ def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
         by_run[(recording.machine, recording.run)].append(recording)
     run_seconds = 0.0
     runs = 0
+    specs = {sensor.name: sensor for sensor in plan.sensors}
     for (machine, scenario), part in plan.allocation.groupby(["machine", "scenario"], sort=True):
         if (machine, scenario) in plan.skipped:
             continue
         train = part[part["side"] == "train"]["run"]
         members = [rec for run in train for rec in by_run.get((machine, run), [])]
-        for sensor in plan.sensors:
-            n_train = sum(_windows(r, sensor, config.window_s, config.settle_s) for r in members)
-            for clf in plan.classifiers:
-                a, b = RUN_SECONDS.get(clf.name, slowest)
-                run_seconds += config.repeats * units * (a + b * n_train)
-                runs += config.repeats * units
+        for train, _ in _groups(plan):  # ordinary, transfer; each on channels and nodes
+            for channels in [None, *(n.channels[:1] for n in plan.sample_nodes)]:
+                n_train = sum(
+                    _windows(r, specs[name], config.window_s, config.settle_s)
+                    for name in train
+                    for r in members
+                    if channels is None or r.channel in channels
+                )
+                for clf in plan.classifiers:
+                    a, b = RUN_SECONDS.get(clf.name, slowest)
+                    run_seconds += config.repeats * units * (a + b * n_train)
+                    runs += config.repeats * units
     to_do = max(0, runs - stored_runs)
     if runs:
         run_seconds *= to_do / runs

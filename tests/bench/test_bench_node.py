@@ -89,3 +89,10 @@ def test_node_runs_sit_beside_the_channel_runs(ran):
     channels = results[results["sensor"] == "adxl345"].set_index(nodes.index.names)
     assert (channels.loc[nodes.index, "n_test"] == 3 * nodes["n_test"]).all()
     assert (nodes["node"] == "node").all() and channels["node"].isna().all()
+
+
+def test_the_size_estimate_counts_node_and_transfer_runs(ran):
+    from sdt_framework.bench.estimate import estimate
+
+    plan, result = ran
+    assert estimate(plan).runs == len(result.runs)
