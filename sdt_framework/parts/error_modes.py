@@ -25,7 +25,7 @@ from dataclasses import asdict, dataclass
 from typing import Any
 
 from ..errors import SDTError
-from ..stage_use import StageUse, Tolerance
+from ..specs.stage_use import StageUse, Tolerance
 from .errors import REFERENCE_C, TERMS, ErrorTerm
 from .values import Document
 

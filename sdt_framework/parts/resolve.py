@@ -22,7 +22,7 @@ from pydantic import ValidationError
 
 from ..errors import SDTError
 from ..specs import SensorSpec
-from ..stage_use import StageUse, Tolerance
+from ..specs.stage_use import StageUse, Tolerance
 from .error_modes import (
     ERROR_KEYS,
     TermSource,

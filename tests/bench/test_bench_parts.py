@@ -11,12 +11,12 @@ import pytest
 from typer.testing import CliRunner
 
 from sdt_framework import build_registry
+from sdt_framework.api import extract
 from sdt_framework.bench.featurize import FeatureJob, featurize_recording
 from sdt_framework.bench.plan import plan_benchmark
 from sdt_framework.cli.main import app
 from sdt_framework.data import open_manifest
 from sdt_framework.errors import SDTError
-from sdt_framework.features import extract
 
 pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog (make does)")
 

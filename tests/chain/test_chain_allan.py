@@ -12,7 +12,7 @@ from sdt_framework.chain import RunContext, noise_check
 from sdt_framework.chain.allan import allan_curve, gauss_markov_adev
 from sdt_framework.chain.allan_check import allan_check, configured_terms
 from sdt_framework.specs import SensorSpec
-from sdt_framework.stage_use import StageUse
+from sdt_framework.specs.stage_use import StageUse
 from sdt_framework.stages import StageContext
 
 G0 = 9.80665

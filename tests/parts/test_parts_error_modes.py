@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from sdt_framework import SDTError
+from sdt_framework.api import degrade
 from sdt_framework.bench.config import BenchmarkConfig
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
-from sdt_framework.chain import degrade
 from sdt_framework.errors import SpecFileError
 from sdt_framework.parts import ErrorTermsError, all_modes, load_part_text, resolve
 from sdt_framework.stages import draw_unit

@@ -6,7 +6,7 @@ import types
 
 import pytest
 
-import sdt_framework.api
+import sdt_framework.registry
 from sdt_framework import SensorSpec, build_registry, hookimpl
 from sdt_framework.conformance import ConformanceError, check_plugin, check_spec
 from sdt_framework.errors import DuplicateNameError, SDTError, UnknownNameError
@@ -85,6 +85,6 @@ def test_conformance_turns_error_terms_on_and_needs_their_stages(monkeypatch):
     part = build_registry().part("adxl355")
     check_spec(part)  # with the built-in stages: passes
     blocked = build_registry(environ={"SDT_BLOCK_PLUGINS": "stages-errors"})
-    monkeypatch.setattr(sdt_framework.api, "default_registry", lambda: blocked)
+    monkeypatch.setattr(sdt_framework.registry, "default_registry", lambda: blocked)
     with pytest.raises(ConformanceError, match="unknown stage 'offset'"):
         check_spec(part)

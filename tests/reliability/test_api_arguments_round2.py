@@ -15,11 +15,10 @@ import numpy as np
 import pytest
 
 from sdt_framework import build_registry
-from sdt_framework.api import default_registry
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade, extract
 from sdt_framework.errors import ArgumentTypeError, ArgumentValueError, SDTError
 from sdt_framework.explore.ties import evaluate_tie
-from sdt_framework.features import extract
+from sdt_framework.registry import default_registry
 from sdt_framework.sklearn import SensorTwin
 
 

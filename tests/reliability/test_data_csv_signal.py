@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade
 from sdt_framework.data import open_manifest
 from sdt_framework.registry import build_registry
 
