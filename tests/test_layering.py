@@ -4,7 +4,9 @@ Each package or top-level module of ``sdt_framework`` (a "unit") lists the
 units it may import. The table is acyclic, so it is a stack of layers; any
 import not in it fails here, whether at the top of a module, inside a function
 (a lazy import) or under ``TYPE_CHECKING``. A new unit must be added to the
-table, which forces the decision where it sits. """
+table, which forces the decision where it sits. A second test finds import
+circles between modules, lazy imports included.
+"""
 
 from __future__ import annotations
 
@@ -61,7 +63,7 @@ ALLOWED: dict[str, set[str]] = {
     | _IO
     | {"bench", "data", "registry", "sensor_files", "specs", "stages", "toml_files"},
     "report": _IO
-    | {"bench", "chain", "data", "edge", "features", "registry", "specs", "verdict"},
+    | {"bench", "chain", "data", "edge", "explore", "features", "registry", "specs", "verdict"},
     "cli": _IO
     | {
         "bench",
@@ -155,3 +157,37 @@ def test_every_import_follows_a_declared_edge():
                 where = f"{path.relative_to(ROOT)}:{line}"
                 wrong.append(f"{where}: {unit} imports {'.'.join(module) or 'sdt_framework'}")
     assert wrong == [], "\n".join(wrong)
+
+
+def test_no_import_circle_between_modules():
+    """Module to module, lazy imports included (a lazy import hides a circle, it does not end it).
+
+    Importing a package counts as importing its ``__init__``; a package's
+    ``__init__`` importing its own modules is the package, not a circle.
+    """
+    graph: dict[tuple[str, ...], set[tuple[str, ...]]] = {}
+    for path in _sources():
+        name = _module_name(path)
+        graph[name] = {m for m, _ in _imports(path) if m != name}
+    for name, targets in graph.items():
+        if ROOT.joinpath(*name).is_dir():  # a package's __init__
+            graph[name] = {t for t in targets if t[: len(name)] != name}
+    state: dict[tuple[str, ...], int] = {}
+    circles = []
+
+    def visit(node: tuple[str, ...], stack: list[tuple[str, ...]]) -> None:
+        state[node] = 1
+        for target in sorted(graph.get(node, ())):
+            if target not in graph:
+                continue
+            if state.get(target) == 1:
+                cycle = [*stack[stack.index(target) :], target]
+                circles.append(" -> ".join(".".join(m) or "sdt_framework" for m in cycle))
+            elif target not in state:
+                visit(target, [*stack, target])
+        state[node] = 2
+
+    for node in sorted(graph):
+        if node not in state:
+            visit(node, [node])
+    assert circles == [], "\n".join(circles)
