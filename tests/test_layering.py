@@ -51,19 +51,31 @@ ALLOWED: dict[str, set[str]] = {
     "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
     "features": {"arguments", "errors", "io", "specs"},
     "edge": {"errors", "specs"},
+    "validation": _IO | {"chain", "specs", "stages"},
     "api": {"arguments", "chain", "errors", "features", "registry", "specs"},
     "conformance": {"chain", "errors", "features", "parts", "registry", "specs", "stages"},
     "sklearn": {"api", "arguments", "chain", "errors", "features", "specs"},
     "twin": _IO | {"chain", "data", "specs", "toml_files"},
     "bench": _BASE
     | _IO
-    | {"chain", "data", "edge", "features", "parts", "registry", "specs", "stages", "toml_files"},
+    | {"chain", "data", "features", "parts", "registry", "specs", "stages", "toml_files"},
     "verdict": {"bench", "errors", "seeding"},
     "explore": _BASE
     | _IO
     | {"bench", "data", "registry", "sensor_files", "specs", "stages", "toml_files"},
     "report": _IO
-    | {"bench", "chain", "data", "edge", "explore", "features", "registry", "specs", "verdict"},
+    | {
+        "bench",
+        "chain",
+        "data",
+        "edge",
+        "explore",
+        "features",
+        "registry",
+        "specs",
+        "validation",
+        "verdict",
+    },
     "cli": _IO
     | {
         "bench",
@@ -77,6 +89,7 @@ ALLOWED: dict[str, set[str]] = {
         "report",
         "specs",
         "twin",
+        "validation",
         "verdict",
     },
     "__init__": {"errors", "hookspecs", "registry", "specs"},

@@ -26,7 +26,7 @@ from pathlib import Path
 import pandas as pd
 
 from ..data.cache import default_cache_dir
-from ..edge.quantise import quantise_features
+from ..features.quantise import quantise_features
 from ..io import ensure_writable_dir
 from .classify import RunResult, run_classifier
 from .execute import check_scheduler_address, open_executor
