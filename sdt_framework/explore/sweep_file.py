@@ -9,23 +9,12 @@ import os
 from pathlib import Path
 from typing import Any
 
-from pydantic import ValidationError
-
 from ..bench.config_paths import resolve_written, written_by_sdt
 from ..errors import SpecFileError
-from ..toml_files import read_toml
+from ..toml_files import read_toml, validate_file
 from .sweep import Sweep
 
 __all__ = ["load_sweep", "parse_sweep"]
-
-
-def _where(exc: ValidationError) -> tuple[str, str]:
-    first = exc.errors()[0]
-    field = ".".join(str(p) for p in first["loc"])
-    reason = first["msg"].removeprefix("Value error, ")
-    if first["type"] == "extra_forbidden":
-        reason = "unknown key"
-    return field, reason
 
 
 def load_sweep(path: str | os.PathLike[str]) -> tuple[Sweep, dict[str, Any]]:
@@ -51,8 +40,4 @@ def load_sweep(path: str | os.PathLike[str]) -> tuple[Sweep, dict[str, Any]]:
 
 def parse_sweep(table: dict[str, Any], where: str | os.PathLike[str] = "sweep") -> Sweep:
     """Validate a ``[sweep]`` table; errors name ``where`` and the key."""
-    try:
-        return Sweep.model_validate(table)
-    except ValidationError as exc:
-        field, reason = _where(exc)
-        raise SpecFileError(where, f"sweep.{field}" if field else "sweep", reason) from None
+    return validate_file(Sweep, table, where, prefix="sweep.", unknown="unknown key")
