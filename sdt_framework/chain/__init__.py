@@ -23,7 +23,7 @@ simulation_problem(sensor, fs)
 from __future__ import annotations
 
 from .chain import Chain, build_stages, compile_chain, degrade
-from .errors import ChainInputError, ChainInputTypeError
+from .checks import ChainInputError, ChainInputTypeError
 from .filters import design_lowpass, is_skipped, lowpass_gain
 from .simulable import simulation_problem
 from .stages import (

@@ -21,7 +21,7 @@ from numpy.typing import ArrayLike, NDArray
 from ..arguments import check_real, check_seed, check_spec
 from ..specs import SensorSpec
 from ..stages import bind_listed, build_extra, place
-from .errors import check_node, check_rates, check_signal
+from .checks import check_node, check_rates, check_signal
 from .filters import design_lowpass
 from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise
 

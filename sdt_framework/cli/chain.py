@@ -10,7 +10,7 @@ import typer
 from ..errors import SDTError
 from .common import console, err_console, print_json, print_table, registry
 
-__all__ = ["degrade_command", "register", "validate_noise_command"]
+__all__ = ["degrade_command", "validate_noise_command"]
 
 
 def degrade_command(
@@ -241,9 +241,3 @@ def _ide_axis(path: Path, channel: int | None, sensor: str, axis: str, fs: float
     _note(f"{path.name}: channel {channel} axis {axis}, {read.values.shape[1]} samples at "
           f"{read.rate_hz:.2f} Hz (measured from the timestamps)")  # fmt: skip
     return read.values[0], rate
-
-
-def register(app: typer.Typer) -> None:
-    """Add ``degrade`` and ``validate-noise`` to the root ``sdt`` app."""
-    app.command("degrade")(degrade_command)
-    app.command("validate-noise")(validate_noise_command)

@@ -26,7 +26,7 @@ from typing import Any
 
 from ..errors import SDTError
 from ..specs.stage_use import StageUse, Tolerance
-from .errors import REFERENCE_C, TERMS, ErrorTerm
+from .error_terms import REFERENCE_C, TERMS, ErrorTerm
 from .values import Document
 
 __all__ = [

@@ -28,7 +28,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import signal, stats
 
 from ..chain import compile_chain, degrade
-from ..chain.errors import ChainInputError, check_signal
+from ..chain.checks import ChainInputError, check_signal
 from ..specs import SensorSpec
 from ..stages import uses_node
 
