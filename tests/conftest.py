@@ -1,4 +1,10 @@
-"""Shared fixtures: fake installed distributions, built in a temp folder.
+"""Shared fixtures: fake installed distributions, built in a temp folder; the catalogue marker.
+
+A test that needs the sensor catalogue (``plugins/sensors-catalog``, its own
+distribution, installed by ``make``) is marked ``@pytest.mark.catalog`` (a
+whole module: ``pytestmark = pytest.mark.catalog``); it is skipped, saying
+why, when the catalogue is not installed. ``pytest -m "not catalog"`` runs the
+rest.
 
 Following flake8's approach, a test that needs a third-party plugin writes a
 module and a ``*.dist-info`` folder with ``entry_points.txt`` into a temporary
@@ -9,6 +15,7 @@ find a pip-installed distribution.
 from __future__ import annotations
 
 import importlib
+import importlib.util
 import sys
 import textwrap
 from collections.abc import Callable, Iterator
@@ -20,6 +27,23 @@ from sdt_framework import build_registry
 from sdt_framework.cli.main import main
 
 FakeDist = Callable[..., Path]
+CATALOG_MISSING = "the sensor catalogue is not installed: pip install -e plugins/sensors-catalog"
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line(
+        "markers", "catalog: needs the separately installed sensor catalogue (sdt_sensors_catalog)"
+    )
+
+
+def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
+    """Skip, with the reason, every test marked ``catalog`` when the catalogue is absent."""
+    if importlib.util.find_spec("sdt_sensors_catalog") is not None:
+        return
+    skip = pytest.mark.skip(reason=CATALOG_MISSING)
+    for item in items:
+        if item.get_closest_marker("catalog") is not None:
+            item.add_marker(skip)
 
 
 @pytest.fixture

@@ -18,7 +18,7 @@ from sdt_framework.cli.main import app
 from sdt_framework.data import open_manifest
 from sdt_framework.errors import SDTError
 
-pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog (make does)")
+pytestmark = pytest.mark.catalog
 
 
 def write_manifest(folder: Path, fs: float, seconds: float = 1.5) -> Path:

@@ -1,50 +1,19 @@
-"""Profiles for the chain tests, built here so tests never depend on what is installed."""
+"""Profiles for the chain tests: the built-in plugins' own, whatever else is installed."""
 
 from __future__ import annotations
 
 import pytest
+from sdt_plugins.sensors import adxl345, adxl357, wilcoxon_786b10
 
+from sdt_framework import build_registry
 from sdt_framework.specs import SensorSpec
 
-ADXL345 = SensorSpec(
-    name="adxl345",
-    sampling_rate_hz=3200,
-    full_scale_g=16,
-    adc_bits=13,
-    noise_density_ug_rthz=290,
-    mech_cutoff_hz=7000,
-    mech_order=2,
-    analog_cutoff_hz=1600,
-    analog_order=1,
-    digital_cutoff_hz=1599,
-    digital_order=1,
-)
-ADXL357 = SensorSpec(
-    name="adxl357",
-    sampling_rate_hz=4000,
-    full_scale_g=40,
-    adc_bits=20,
-    noise_density_ug_rthz=90,
-    mech_cutoff_hz=5500,
-    mech_order=2,
-    analog_cutoff_hz=1500,
-    analog_order=1,
-    digital_cutoff_hz=1000,
-    digital_order=8,
-)
-REFERENCE = SensorSpec(
-    name="wilcoxon-786b10",
-    sampling_rate_hz=20000,
-    full_scale_g=80,
-    adc_bits=24,
-    noise_density_ug_rthz=5,
-    inject_noise=False,
-    requantise=False,
-    mech_cutoff_hz=30000,
-    mech_order=2,
-    analog_cutoff_hz=10000,
-    analog_order=1,
-)
+#: the built-in profiles of paper Table 1, as their plugins register them (not copies that
+#: could drift), from a registry of those plugins alone (no entry points, no SDT_* switches)
+_BUILTIN = build_registry(entry_points=False, plugins=[adxl345, adxl357, wilcoxon_786b10])
+ADXL345 = _BUILTIN.sensor("adxl345")
+ADXL357 = _BUILTIN.sensor("adxl357")
+REFERENCE = _BUILTIN.sensor("wilcoxon-786b10")
 
 
 @pytest.fixture

@@ -17,6 +17,7 @@ from sdt_framework.stages import draw_unit
 
 from .conftest import TOY
 
+pytestmark = pytest.mark.catalog
 catalogue = pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog")
 PARTS = {part.name: part for part in catalogue.load_parts()}
 

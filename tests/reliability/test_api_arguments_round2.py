@@ -60,6 +60,7 @@ def test_extract_with_a_label_names_it_in_a_signal_error():
         extract(np.zeros(100), 3200.0, "paper8", label="run-7.npy")
 
 
+@pytest.mark.catalog
 def test_degrade_resolves_a_part_in_a_mode_as_the_cli_does():
     """A 5 g sine through the ADXL355 at +-8 g keeps its peak; the default +-2 g clips it."""
     fs = 20000.0
