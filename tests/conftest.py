@@ -1,4 +1,4 @@
-"""Shared fixtures: fake installed distributions, built in a temp folder; the catalogue marker.
+"""Shared fixtures: fake installed distributions, the built-in profiles, the catalogue marker.
 
 A test that needs the sensor catalogue (``plugins/sensors-catalog``, its own
 distribution, installed by ``make``) is marked ``@pytest.mark.catalog`` (a
@@ -22,9 +22,13 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
+from sdt_plugins.sensors import adxl345 as builtin_adxl345
+from sdt_plugins.sensors import adxl357 as builtin_adxl357
+from sdt_plugins.sensors import wilcoxon_786b10 as builtin_reference
 
 from sdt_framework import build_registry
 from sdt_framework.cli.main import main
+from sdt_framework.specs import SensorSpec
 
 FakeDist = Callable[..., Path]
 CATALOG_MISSING = "the sensor catalogue is not installed: pip install -e plugins/sensors-catalog"
@@ -92,3 +96,38 @@ def sdt_main(monkeypatch, capsys):
         return code, out.out, out.err
 
     return run
+
+
+#: the built-in profiles of paper Table 1, as their plugins register them (not copies that
+#: could drift), from a registry of those plugins alone (no entry points, no SDT_* switches)
+_BUILTIN = build_registry(
+    entry_points=False,
+    plugins=[builtin_adxl345, builtin_adxl357, builtin_reference],
+)
+ADXL345 = _BUILTIN.sensor("adxl345")
+ADXL357 = _BUILTIN.sensor("adxl357")
+REFERENCE = _BUILTIN.sensor("wilcoxon-786b10")
+
+
+@pytest.fixture
+def adxl345() -> SensorSpec:
+    """The ADXL345 profile of paper Table 1."""
+    return ADXL345
+
+
+@pytest.fixture
+def adxl357() -> SensorSpec:
+    """The ADXL357 profile of paper Table 1."""
+    return ADXL357
+
+
+@pytest.fixture
+def reference() -> SensorSpec:
+    """The reference Wilcoxon chain of paper Table 1."""
+    return REFERENCE
+
+
+@pytest.fixture(params=[ADXL345, ADXL357], ids=lambda s: s.name)
+def mems(request: pytest.FixtureRequest) -> SensorSpec:
+    """Each MEMS profile of paper Table 1."""
+    return request.param
