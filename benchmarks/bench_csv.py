@@ -20,7 +20,7 @@ import numpy as np
 import pandas as pd
 
 from sdt_framework.data import open_nln_emp, write_nln_emp
-from sdt_framework.data.csvread import parse_nln_csv
+from sdt_framework.data.nln_emp_csv import parse_nln_csv
 from sdt_framework.data.recording import Dataset, Recording
 
 

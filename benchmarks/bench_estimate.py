@@ -25,7 +25,7 @@ from sdt_framework.bench import runner
 from sdt_framework.bench.classify import run_classifier
 from sdt_framework.bench.config import load_config
 from sdt_framework.bench.estimate import FEATURE_SECONDS_PER_MSAMPLE, RUN_SECONDS, estimate
-from sdt_framework.bench.featurize import FeatureJob, featurize_recording
+from sdt_framework.bench.featurise import FeatureJob, featurise_recording
 
 
 def main() -> None:
@@ -40,7 +40,7 @@ def main() -> None:
             for r in plan.recordings
         ]  # fmt: skip
         start = time.process_time()
-        blocks = [b for job in jobs for b in featurize_recording(job).blocks]
+        blocks = [b for job in jobs for b in featurise_recording(job).blocks]
         feature_cpu = time.process_time() - start
         computed = {(b.recording_id, b.sensor, b.repeat) for b in blocks if b.source == "computed"}
         by_id = {r.recording_id: r for r in plan.recordings}

@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from sdt_framework.bench.featurize import FeatureJob, featurize_recording, noise_seed
+from sdt_framework.bench.featurise import FeatureJob, featurise_recording, noise_seed
 from sdt_framework.chain import degrade
 from sdt_framework.data.synth_dataset import open_synthetic
 from sdt_framework.explore import build_points, design_points, load_sweep
@@ -72,18 +72,18 @@ def sharing(recordings: int, duration: float, repeats: int) -> None:
         def load(self):
             return self.data
 
-    start = time.perf_counter()  # ours: bench.featurize, the benchmark's own code path
+    start = time.perf_counter()  # ours: bench.featurise, the benchmark's own code path
     ours = []
     for r, x in loaded:
         job = FeatureJob(Loaded(r, x), "bench", specs, paper8, repeats, 0, 0.64, 0.1, None)
-        blocks = {(b.sensor, b.repeat): b.values for b in featurize_recording(job).blocks}
+        blocks = {(b.sensor, b.repeat): b.values for b in featurise_recording(job).blocks}
         ours += [blocks[(s.name, k)] for s in specs for k in range(repeats)]
     ours_s = time.perf_counter() - start
     same = all(np.array_equal(a, b) for a, b in zip(plain, ours, strict=True))
     print(
         f"16-point sweep x {repeats} repetitions, {len(loaded)} recordings "
         f"({samples / 1e6:.1f} M samples at 20 kHz): independent profiles {plain_s:.2f} s, "
-        f"shared prefix (bench.featurize) {ours_s:.2f} s -> {plain_s / ours_s:.2f}x "
+        f"shared prefix (bench.featurise) {ours_s:.2f} s -> {plain_s / ours_s:.2f}x "
         f"(target >= 3x); features bit-identical: {same}",
         flush=True,
     )

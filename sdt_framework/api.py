@@ -1,58 +1,40 @@
-"""Argument checks and name lookup shared by the public Python API.
+"""The public Python functions that also take a registered name.
 
 ``degrade(x, fs, "adxl345")`` and ``extract(y, fs, "paper8")`` take a spec or a
-registered name (for a sensor also a part in a mode, ``"adxl355[range=8g]"``); a
-name is looked up in :func:`default_registry`, built once on first use (entry
-points, ``SDT_SENSOR_PATH`` and the ``SDT_*`` switches of the environment at
-that moment). The checks below run once at the API boundary, so
-a wrong type fails with a :class:`TypeError` naming the argument instead of
-being silently converted (``int(1.5)``, ``int("3")``, ``float(True)``) or failing
-deep inside numpy. Each error is also an :class:`~sdt_framework.errors.SDTError`,
-so the CLI prints it as one line.
+registered name (for a sensor also a part in a mode, ``"adxl355[range=8g]"``;
+for a feature set a composition, ``"paper8+env_bpfo"``). A name is looked up in
+:func:`sdt_framework.registry.default_registry`, built on first use. This
+module sits above :mod:`sdt_framework.chain` and :mod:`sdt_framework.features`,
+which take resolved specs and never import the registry; given specs, the
+functions here are exactly theirs.
 """
 
 from __future__ import annotations
 
-import functools
-import math
-import numbers
+from collections.abc import Mapping, Sequence
 from typing import TypeVar
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
-from .dtypes import describe_dtype, is_real
-from .errors import ArgumentTypeError, ArgumentValueError, one_line
-from .registry import Registry, build_registry
-from .specs import SensorSpec, Spec
+from . import registry as _registry
+from .errors import ArgumentTypeError
+from .features import FeatureTable, resolve_feature_set
+from .features import extract as _extract
+from .features.windowing import SETTLE_S, WINDOW_S
+from .specs import FeatureSetSpec, SensorSpec, Spec
 
-__all__ = [
-    "check_rate",
-    "check_real",
-    "check_seed",
-    "default_registry",
-    "describe_dtype",
-    "real_array",
-    "resolve",
-]
+__all__ = ["degrade", "extract", "resolve"]
 
 S = TypeVar("S", bound=Spec)
-
-
-@functools.cache
-def default_registry() -> Registry:
-    """The registry names are resolved in, built on first use and then reused.
-
-    Call ``default_registry.cache_clear()`` to rebuild it (after installing a
-    plugin or changing ``SDT_PLUGINS`` in a running session).
-    """
-    return build_registry()
 
 
 def resolve(kind: type[S], value: object, argument: str) -> S:
     """``value`` itself if it is a ``kind`` spec, the registered one if it is a name.
 
     A sensor name may be a catalogue part in a mode, ``"adxl355[range=8g]"``,
-    resolved as ``sdt degrade --sensor`` resolves it.
+    resolved as ``sdt degrade --sensor`` resolves it; a feature-set name may
+    compose registered sets, ``"paper8+env_bpfo"``.
 
     Raises
     ------
@@ -64,63 +46,58 @@ def resolve(kind: type[S], value: object, argument: str) -> S:
     if isinstance(value, kind):
         return value
     if isinstance(value, str):
+        registry = _registry.default_registry()
         if issubclass(kind, SensorSpec):  # a part in a mode too, as the CLI takes it
-            return default_registry().sensor(value)  # type: ignore[return-value]
-        return default_registry()._get(kind, value)
+            return registry.sensor(value)  # type: ignore[return-value]
+        if issubclass(kind, FeatureSetSpec):
+            return resolve_feature_set(registry, value)  # type: ignore[return-value]
+        return registry._get(kind, value)
+    example = " (str, e.g. 'paper8')" if issubclass(kind, FeatureSetSpec) else " (str)"
     raise ArgumentTypeError(
-        f"{argument} must be a {kind.__name__} or the name of a registered {kind.kind} (str), "
-        f"got {type(value).__name__}"
+        f"{argument} must be a {kind.__name__} or the name of a registered {kind.kind}"
+        f"{example}, got {type(value).__name__}"
     )
 
 
-def _shown(value: object) -> str:
-    return one_line(repr(value), 40)
+def degrade(
+    x: ArrayLike,
+    fs: float,
+    sensor: SensorSpec | str,
+    seed: int = 0,
+    *,
+    noise: bool = True,
+    label: str = "",
+    first_index: int = 0,
+    acquisition_ids: Sequence[int | str] | None = None,
+    threads: int | None = None,
+    other_axes: Mapping[str, ArrayLike] | None = None,
+) -> tuple[NDArray[np.float64], float]:
+    """:func:`sdt_framework.chain.degrade`, ``sensor`` also a registered name (``"adxl345"``)."""
+    from .chain import degrade as _degrade  # scipy: imported on use
+
+    return _degrade(
+        x,
+        fs,
+        resolve(SensorSpec, sensor, "sensor"),
+        seed,
+        noise=noise,
+        label=label,
+        first_index=first_index,
+        acquisition_ids=acquisition_ids,
+        threads=threads,
+        other_axes=other_axes,
+    )
 
 
-def check_seed(seed: object, argument: str = "seed") -> int:
-    """``seed`` as an int; bools, floats, strings and the like are refused, not converted."""
-    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral):
-        raise ArgumentTypeError(
-            f"{argument} must be an integer, got {type(seed).__name__} {_shown(seed)}"
-        )
-    return int(seed)
-
-
-def check_real(value: object, argument: str, unit: str = "") -> float:
-    """``value`` as a float if it is a real number (int, float, numpy scalar; not bool or str)."""
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        what = f"a number of {unit}" if unit else "a number"
-        raise ArgumentTypeError(
-            f"{argument} must be {what} (int or float), got {type(value).__name__} {_shown(value)}"
-        )
-    return float(value)
-
-
-def check_rate(fs: object, argument: str = "fs") -> float:
-    """A sampling rate as a positive finite float, in Hz."""
-    rate = check_real(fs, argument, "Hz")
-    if not math.isfinite(rate) or rate <= 0:
-        raise ArgumentValueError(f"{argument} must be a positive number of Hz, got {rate:g}")
-    return rate
-
-
-def real_array(x: object, argument: str = "x", label: str = "") -> np.ndarray:
-    """``x`` as a numpy array of real numbers (int or float dtype), not copied if it is one.
-
-    Booleans, complex numbers, Python objects and text are refused (a bool
-    array would otherwise become 0/1 g without a word).
-    """
-    where = f" (recording {label!r})" if label else ""
-    try:
-        array = np.asarray(x)
-    except (TypeError, ValueError) as exc:
-        raise ArgumentValueError(
-            f"{argument}{where} cannot be read as an array of numbers: {one_line(exc, 120)}"
-        ) from None
-    if not is_real(array.dtype):
-        raise ArgumentTypeError(
-            f"{argument}{where} must hold real numbers (int or float), got "
-            f"{describe_dtype(array.dtype)}; convert it first, e.g. np.asarray({argument}, "
-            f"dtype=float)"
-        )
-    return array
+def extract(
+    x: np.ndarray,
+    fs: float,
+    feature_set: FeatureSetSpec | str,
+    *,
+    window_s: float = WINDOW_S,
+    settle_s: float = SETTLE_S,
+    label: str = "",
+) -> FeatureTable:
+    """:func:`sdt_framework.features.extract`, ``feature_set`` also a name (``"paper8"``)."""
+    spec = resolve(FeatureSetSpec, feature_set, "feature_set")
+    return _extract(x, fs, spec, window_s=window_s, settle_s=settle_s, label=label)

@@ -81,7 +81,7 @@ def _check_error_terms(spec: PartSpec) -> None:
     A mode without terms is an :class:`ErrorTermsError` by design and is
     passed over; a part with terms must have at least one mode that runs.
     """
-    from .api import default_registry
+    from . import registry
     from .chain import compile_chain
     from .parts.error_modes import ErrorTermsError
     from .stages import draw_unit
@@ -96,7 +96,7 @@ def _check_error_terms(spec: PartSpec) -> None:
             except ErrorTermsError:
                 continue  # this mode (or this key) has no terms
             try:
-                unit = draw_unit(default_registry().bind(sensor), seed=0, k=0)
+                unit = draw_unit(registry.default_registry().bind(sensor), seed=0, k=0)
                 compile_chain(unit, max(20000.0, float(unit.sampling_rate_hz)))
             except SDTError as exc:
                 raise ConformanceError(f"{exc} (plugin {spec.plugin!r})") from None

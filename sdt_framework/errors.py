@@ -22,6 +22,7 @@ __all__ = [
     "SpecFileError",
     "UnknownNameError",
     "UserInterruptError",
+    "field_errors",
     "one_line",
     "validation_summary",
 ]
@@ -106,25 +107,44 @@ def one_line(text: object, limit: int = 300) -> str:
     return flat if len(flat) <= limit else flat[: limit - 3] + "..."
 
 
-_FIELD = re.compile(r"^(\w+|\d+)$")
+#: how pydantic tags the branch of a union in an error's location ('constrained-float',
+#: "literal['native']", 'function-after[...]', 'float'); a field or key is never one
+_BRANCH_TAG = re.compile(r"^([a-z]+(-[a-z]+)+|[a-z-]+\[.*\]|float|int|str|bool|none)$", re.DOTALL)
+
+
+def field_errors(
+    exc: ValidationError, *, unknown: str = "unknown field", show_input: bool = False
+) -> list[tuple[str, str]]:
+    """(field, reason) of each error of a pydantic ``ValidationError``: the one way they read.
+
+    ``field`` is the dotted path (a union's branch tags, such as
+    'constrained-float', left out: the field is named once, with its first
+    reason); ``reason`` is pydantic's message without its "Value error, "
+    prefix, ``unknown`` for a key the model does not have (callers add where
+    to look the keys up), and the value given if ``show_input``.
+    """
+    out: dict[str, str] = {}
+    for error in exc.errors():
+        loc = [str(p) for p in error.get("loc", ()) if not _BRANCH_TAG.match(str(p))]
+        field = ".".join(loc)
+        reason = str(error.get("msg", "invalid")).removeprefix("Value error, ")
+        if error.get("type") == "extra_forbidden":
+            reason = unknown
+        if show_input and "input" in error:
+            reason = f"{reason} (got {error['input']!r})"
+        out.setdefault(field, reason)
+    return list(out.items())
 
 
 def validation_summary(exc: Exception) -> str:
     """One line naming each invalid field of a pydantic ``ValidationError`` and why.
 
     Other exceptions give ``"TypeName: message"`` on one line. The offending
-    values are not quoted (they may be long); the field names are.
+    values are not quoted (they may be long); the field names are. A user
+    file's error names its first field instead:
+    :func:`sdt_framework.toml_files.validate_file`.
     """
     if not isinstance(exc, ValidationError):
         return one_line(f"{type(exc).__name__}: {exc}")
-    parts: dict[str, str] = {}
-    for error in exc.errors():
-        # a union field (e.g. a rate that is a number or "native") reports each branch
-        # under a tag such as 'constrained-float': name the field once, first reason
-        loc = [str(p) for p in error.get("loc", ()) if _FIELD.match(str(p))]
-        field = ".".join(loc)
-        reason = str(error.get("msg", "invalid")).removeprefix("Value error, ")
-        if error.get("type") == "extra_forbidden":
-            reason = "unknown field"
-        parts.setdefault(field, f"field {field!r}: {reason}" if field else reason)
-    return one_line("; ".join(parts.values()))
+    parts = [f"field {f!r}: {reason}" if f else reason for f, reason in field_errors(exc)]
+    return one_line("; ".join(parts))

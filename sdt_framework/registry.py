@@ -5,10 +5,17 @@ sensor files; the orchestrator only calls ``registry.sensor(name)``,
 ``registry.classifiers()`` and the like and never touches ``pm.hook``. The
 ``register`` callback handed to every hook is the single place that validates
 a spec, stamps its provenance and rejects duplicates.
+
+:func:`default_registry` is the one process-wide registry that registered
+names (``degrade(x, fs, "adxl345")``) are resolved in; importing this module
+installs it as the binder of the stages a profile built in Python lists (see
+:func:`sdt_framework.stages.install_stage_binder`), so the chain binds them
+without importing the registry.
 """
 
 from __future__ import annotations
 
+import functools
 import os
 import sys
 from collections.abc import Iterable, Mapping
@@ -25,9 +32,10 @@ from .parts import PartSpec
 from .registry_lookup import RegistryLookup
 from .sensor_files import load_sensor_file, sensor_files_from_env
 from .specs import POINT_SUFFIX, ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
+from .stages.bind import install_stage_binder
 from .stages.spec import StageSpec
 
-__all__ = ["HOOKS", "Registry", "build_registry"]
+__all__ = ["HOOKS", "Registry", "build_registry", "default_registry"]
 
 #: hook name -> spec type it registers
 HOOKS: dict[str, type[Spec]] = {
@@ -238,3 +246,23 @@ def build_registry(
     for path in [*sensor_files_from_env(environ), *sensor_files]:
         registry.add_sensor_file(path)
     return registry
+
+
+@functools.cache
+def default_registry() -> Registry:
+    """The registry names are resolved in, built on first use and then reused.
+
+    Built from the entry points, ``SDT_SENSOR_PATH`` and the ``SDT_*``
+    switches of the environment at that moment. Call
+    ``default_registry.cache_clear()`` to rebuild it (after installing a
+    plugin or changing ``SDT_PLUGINS`` in a running session).
+    """
+    return build_registry()
+
+
+def _bind_in_default(sensor: SensorSpec) -> SensorSpec:
+    """``sensor``'s listed stages bound to those of :func:`default_registry` (read at call time)."""
+    return default_registry().bind(sensor)
+
+
+install_stage_binder(_bind_in_default)

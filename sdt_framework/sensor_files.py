@@ -11,15 +11,14 @@ import os
 from collections.abc import Iterator
 from pathlib import Path
 
-from pydantic import ValidationError
-
 from .errors import SpecFileError, one_line
 from .specs import SensorSpec
-from .toml_files import read_toml
+from .toml_files import read_toml, validate_file
 
 __all__ = ["ENV_SENSOR_PATH", "load_sensor_file", "sensor_files_from_env"]
 
 ENV_SENSOR_PATH = "SDT_SENSOR_PATH"
+_UNKNOWN = "unknown field (check its spelling against `sdt sensors show adxl345`)"
 
 
 def load_sensor_file(path: str | os.PathLike[str]) -> list[SensorSpec]:
@@ -39,15 +38,7 @@ def load_sensor_file(path: str | os.PathLike[str]) -> list[SensorSpec]:
     specs = []
     for index, table in enumerate(tables):
         prefix = f"sensor[{index}]." if "sensor" in data else ""
-        try:
-            specs.append(SensorSpec.model_validate(table))
-        except ValidationError as exc:
-            first = exc.errors()[0]
-            field = prefix + ".".join(str(part) for part in first["loc"])
-            reason = first["msg"]
-            if first.get("type") == "extra_forbidden":
-                reason = "unknown field (check its spelling against `sdt sensors show adxl345`)"
-            raise SpecFileError(path, field.rstrip("."), reason) from None
+        specs.append(validate_file(SensorSpec, table, path, prefix=prefix, unknown=_UNKNOWN))
     return specs
 
 

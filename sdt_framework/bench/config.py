@@ -14,19 +14,19 @@ from pathlib import Path
 from typing import Any, Literal
 
 import tomli_w
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator
 
-from ..errors import SDTError, SpecFileError, one_line
+from ..errors import SpecFileError, one_line
 from ..io import atomic_write_text
-from ..toml_files import read_toml
+from ..toml_files import read_toml, validate_file
 from .config_paths import relative_to, resolve_written, written_by_sdt
 
 __all__ = [
     "SCENARIOS",
     "BenchmarkConfig",
-    "config_error",
     "load_config",
     "quick_preset",
+    "validate_config",
     "write_config",
 ]
 
@@ -154,12 +154,9 @@ class BenchmarkConfig(BaseModel):
         return os.cpu_count() or 1 if self.jobs == -1 else self.jobs
 
 
-def config_error(exc: ValidationError, where: str) -> SDTError:
-    """One line naming ``where``, the first invalid field, the reason and the value."""
-    first = exc.errors()[0]
-    field = ".".join(str(p) for p in first["loc"])
-    reason = "unknown option" if first["type"] == "extra_forbidden" else first["msg"]
-    return SpecFileError(where, field, f"{reason} (got {first.get('input')!r})")
+def validate_config(data: dict[str, Any], where: str) -> BenchmarkConfig:
+    """``data`` as a :class:`BenchmarkConfig`; an error names ``where``, the field and the value."""
+    return validate_file(BenchmarkConfig, data, where, unknown="unknown option", show_input=True)
 
 
 def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) -> BenchmarkConfig:
@@ -187,10 +184,7 @@ def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) 
     if overrides.pop("quick", False):
         data = quick_preset({**data, **overrides})
     data.update(overrides)
-    try:
-        return BenchmarkConfig.model_validate(data)
-    except ValidationError as exc:
-        raise config_error(exc, where) from None
+    return validate_config(data, where)
 
 
 def quick_preset(data: dict[str, Any]) -> dict[str, Any]:

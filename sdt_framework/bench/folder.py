@@ -20,12 +20,12 @@ from __future__ import annotations
 
 import json
 import re
-import tomllib
 from pathlib import Path
 from typing import Any
 
 from ..errors import SDTError
 from ..io import OutputError, atomic_write_text, ensure_writable_dir
+from ..toml_files import parse_toml
 from .config import BenchmarkConfig, write_config
 from .config_paths import relative_to, resolve_written
 
@@ -125,9 +125,9 @@ def _stored_identity(out: Path) -> dict[str, Any] | None:
     if not text.startswith(_CONFIG_HEADER):
         return None
     try:
-        data = resolve_written(tomllib.loads(text).get("benchmark", {}), out)
+        data = resolve_written(parse_toml(text, config).get("benchmark", {}), out)
         return relative_to(config_identity(BenchmarkConfig.model_validate(data)), out)
-    except (tomllib.TOMLDecodeError, ValueError):
+    except (SDTError, ValueError):  # not one sdt wrote as it reads it: not this folder's
         return None
 
 

@@ -27,9 +27,10 @@ import pandas as pd
 from ..io import atomic_write_text
 from .config import write_config
 from .folder import OUTPUT_FILES
-from .results import per_recording, table4_markdown, tidy, write_frame
+from .results import per_recording, tidy, write_frame
 from .runner import BenchmarkResult
 from .saturation import saturation_summary
+from .table4 import build_table4, table4_markdown
 
 __all__ = ["OUTPUT_FILES", "software_versions", "write_outputs"]
 
@@ -91,7 +92,7 @@ def write_outputs(result: BenchmarkResult, out_dir: str | Path) -> pd.DataFrame:
     atomic_write_text(
         out / "table4.md",
         "# Table 4: Macro F1 by scenario, sensor, machine and "
-        "classifier\n\n" + table4_markdown(results, [s.name for s in plan.sensors]),
+        "classifier\n\n" + table4_markdown(build_table4(results, [s.name for s in plan.sensors])),
     )
     summary = {
         "dataset": plan.dataset.name,

@@ -1,4 +1,4 @@
-"""Tidy result tables and the paper's Table 4 pivot, written atomically.
+"""Tidy result tables, written atomically.
 
 ``results`` has one row per run (dataset, machine, scenario, sensor,
 feature_set, classifier, repeat, unit (-1: the nominal profile), seed,
@@ -7,30 +7,25 @@ and tested on: train_sensor, test_sensor, node; ``sensor`` is the row's
 label: the sensor, ``TRAIN -> TEST`` for a transfer, ``... @ NODE`` for a
 node); ``per_class``,
 ``confusion`` and ``per_recording`` (confusion counts per test recording) are
-long tables keyed by the same run columns. ``table4`` is mean +/- SD (sample
-SD, ddof=1) of Macro F1 with scenario blocks, sensor rows and machine x
-classifier columns.
+long tables keyed by the same run columns. Table 4 is built from ``results``
+in :mod:`sdt_framework.bench.table4`.
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
-from ..io import atomic_path, atomic_write_text
+from ..io import atomic_path
 from .classify import RunResult
 
 __all__ = [
     "RUN_COLUMNS",
     "SCENARIO_TITLES",
     "per_recording",
-    "table4",
-    "table4_blocks",
-    "table4_markdown",
     "tidy",
     "write_frame",
 ]
@@ -118,72 +113,6 @@ def per_recording(runs: Iterable[RunResult]) -> pd.DataFrame:
     return pd.DataFrame(rows, columns=[*RUN_COLUMNS, *_RECORDING_FIELDS])
 
 
-def table4(results: pd.DataFrame) -> pd.DataFrame:
-    """Mean and SD of Macro F1 per (scenario, sensor) x (machine, classifier).
-
-    Returns a frame indexed by (scenario, sensor) with a column MultiIndex
-    (machine, classifier, stat) where stat is "mean", "sd" or "n".
-    """
-    ok = results[results["status"] == "ok"]
-    grouped = ok.groupby(["scenario", "sensor", "machine", "classifier"])["macro_f1"]
-    stats = pd.DataFrame({"mean": grouped.mean(), "sd": grouped.std(ddof=1), "n": grouped.count()})
-    wide = stats.unstack(["machine", "classifier"])
-    wide = wide.reorder_levels([1, 2, 0], axis=1).sort_index(axis=1)
-    scenario_order = {s: i for i, s in enumerate(SCENARIO_TITLES)}
-    return wide.sort_index(
-        key=lambda idx: (
-            idx.map(lambda v: scenario_order.get(v, 99)) if idx.name == "scenario" else idx
-        )
-    )
-
-
-def table4_blocks(
-    wide: pd.DataFrame, sensor_order: Sequence[str] = ()
-) -> Iterator[tuple[str, pd.DataFrame, list[str]]]:
-    """(scenario, its block of ``table4(...)``, sensors in display order) per scenario.
-
-    Scenarios come in the paper's order (A, B, C); sensors in ``sensor_order``
-    first, then any others in the block. Every view of Table 4 (Markdown,
-    terminal, report deltas) walks the table through this one function.
-    """
-    present = set(wide.index.get_level_values(0))
-    for scenario in [s for s in SCENARIO_TITLES if s in present]:
-        block = wide.loc[scenario]
-        sensors = [s for s in sensor_order if s in block.index]
-        sensors += [s for s in block.index if s not in sensors]
-        yield scenario, block, sensors
-
-
-def _cell(mean: float, sd: float, n: float) -> str:
-    if np.isnan(mean):
-        return "–"
-    if n < 2 or np.isnan(sd):
-        return f"{mean:.4f}"
-    return f"{mean:.4f} ± {sd:.4f}"
-
-
-def table4_markdown(results: pd.DataFrame, sensor_order: list[str] | None = None) -> str:
-    """The Table 4 layout as Markdown: one block per scenario, best mean per column in bold."""
-    wide = table4(results)
-    if wide.empty:
-        return "_No successful runs: nothing to tabulate._\n"
-    columns = sorted({(m, c) for m, c, _ in wide.columns})
-    header = "| Sensor | " + " | ".join(f"{m} {c.upper()}" for m, c in columns) + " |"
-    lines = [header, "|---|" + "---|" * len(columns)]
-    for scenario, block, sensors in table4_blocks(wide, sensor_order or ()):
-        lines.append(f"| **{SCENARIO_TITLES[scenario]}** |" + " |" * len(columns))
-        best = {col: block[(*col, "mean")].max() for col in columns}
-        for sensor in sensors:
-            cells = []
-            for col in columns:
-                mean, sd, n = (block.loc[sensor, (*col, s)] for s in ("mean", "sd", "n"))
-                text = _cell(mean, sd, n)
-                cells.append(f"**{text}**" if not np.isnan(mean) and mean == best[col] else text)
-            lines.append(f"| {sensor} | " + " | ".join(cells) + " |")
-    note = "\nMacro F1, mean ± SD (sample SD over repetitions); best mean per column in bold.\n"
-    return "\n".join(lines) + "\n" + note
-
-
 def write_frame(frame: pd.DataFrame, path: str | os.PathLike[str]) -> None:
     """Write a DataFrame atomically as Parquet or CSV (by suffix)."""
     path = Path(path)
@@ -192,8 +121,3 @@ def write_frame(frame: pd.DataFrame, path: str | os.PathLike[str]) -> None:
             frame.to_parquet(tmp, index=False)
         else:
             frame.to_csv(tmp, index=False)
-
-
-def write_markdown(text: str, path: str | os.PathLike[str]) -> None:
-    """Write a Markdown file atomically."""
-    atomic_write_text(path, text)

@@ -26,11 +26,11 @@ from pathlib import Path
 import pandas as pd
 
 from ..data.cache import default_cache_dir
-from ..edge.quantise import quantise_features
+from ..features.quantise import quantise_features
 from ..io import ensure_writable_dir
 from .classify import RunResult, run_classifier
 from .execute import check_scheduler_address, open_executor
-from .featurize import FeatureBlock, FeatureJob, featurize_recording
+from .featurise import FeatureBlock, FeatureJob, featurise_recording
 from .folder import claim_results_folder
 from .plan import Plan, plan_benchmark
 from .saturation import saturation_table
@@ -174,7 +174,7 @@ def run_benchmark(
         start = time.perf_counter()
         blocks: list[FeatureBlock] = []
         report("features", 0, len(jobs))
-        for i, result in enumerate(executor.map_unordered(featurize_recording, jobs), 1):
+        for i, result in enumerate(executor.map_unordered(featurise_recording, jobs), 1):
             blocks.extend(result.blocks)
             for note in result.notes:
                 warn(note)

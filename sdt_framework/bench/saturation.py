@@ -17,7 +17,7 @@ from collections.abc import Iterable
 
 import pandas as pd
 
-from .featurize import FeatureBlock
+from .featurise import FeatureBlock
 
 __all__ = ["WARN_FRACTION", "saturation_lines", "saturation_summary", "saturation_table"]
 

@@ -17,9 +17,9 @@ run cannot be scored fairly and is skipped with that reason.
 
 from __future__ import annotations
 
+import io
 import os
 import re
-import tomllib
 from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,7 +27,7 @@ from pathlib import Path
 import pandas as pd
 
 from ..errors import SDTError
-from ..inputs import require_regular_file
+from ..toml_files import decode_text, parse_toml, read_bytes
 
 __all__ = ["COLUMNS", "Run", "check_allocation", "load_allocation", "rule_allocation"]
 
@@ -92,7 +92,7 @@ _TOML_SHAPE = "[[allocation]] tables, each with machine, scenario, run and side 
 
 def _toml_entries(path: Path, text: str) -> pd.DataFrame:
     """The ``[[allocation]]`` entries of a TOML file, checked for shape entry by entry."""
-    entries = tomllib.loads(text).get("allocation")
+    entries = parse_toml(text, path).get("allocation")
     if not isinstance(entries, list) or not entries:
         found = "missing" if entries is None else f"of type {type(entries).__name__}"
         found = "an empty list" if entries == [] else found
@@ -121,21 +121,17 @@ def load_allocation(path: str | os.PathLike[str], runs: Iterable[Run]) -> pd.Dat
     naming the file (and the entry or row).
     """
     path = Path(path)
-    require_regular_file(path, "allocation file")
     toml = path.suffix.lower() == ".toml"
+    raw = read_bytes(
+        path,
+        what="allocation file",
+        missing="allocation file not found",
+        unreadable="cannot read the allocation table ({reason}); name a readable CSV or TOML file",
+    )
+    text = decode_text(raw, path, "TOML file" if toml else "CSV file")
     try:
-        if toml:
-            table = _toml_entries(path, path.read_text(encoding="utf-8"))
-        else:
-            table = pd.read_csv(path, dtype=str)
-    except FileNotFoundError:
-        raise SDTError(f"{path}: allocation file not found") from None
-    except OSError as exc:
-        raise SDTError(
-            f"{path}: cannot read the allocation table ({exc.strerror or exc}); "
-            f"name a readable CSV or TOML file"
-        ) from None
-    except (ValueError, tomllib.TOMLDecodeError) as exc:
+        table = _toml_entries(path, text) if toml else pd.read_csv(io.StringIO(text), dtype=str)
+    except ValueError as exc:
         reason = " ".join(str(exc).split())[:160]
         raise SDTError(f"{path}: cannot read the allocation table ({reason})") from None
     missing = set(_REQUIRED) - set(table.columns)

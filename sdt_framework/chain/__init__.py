@@ -1,5 +1,9 @@
 """The Sensor Digital Twin measurement chain (SPEC section 2).
 
+The chain only: it draws nothing and reads no files. Checking it against
+zero motion (noise, Allan deviation) is :mod:`sdt_framework.validation`; the
+signal files of ``sdt degrade`` are read in :mod:`sdt_framework.cli.signal_io`.
+
 Public API
 ----------
 degrade(x, fs, sensor, seed=0, *, noise=True, label="", first_index=0, ...)
@@ -9,8 +13,6 @@ compile_chain(sensor, fs), build_stages(sensor, fs), Chain
 LowPass, Sample, WhiteNoise, Quantise, Stage, RunContext, SameRate
     The stages, each usable on its own, the protocol a new stage follows, and
     the mixin of a stage that keeps its input's rate.
-noise_check(sensor, ...), NoiseCheck, plot_noise_check(result, path)
-    The zero-motion noise validation of paper section 3.1 / Table 2.
 ChainInputError, ChainInputTypeError
     The one-line error for a recording or rate the chain cannot take (the second
     one, for samples that are not real numbers, is also a TypeError).
@@ -21,10 +23,8 @@ simulation_problem(sensor, fs)
 from __future__ import annotations
 
 from .chain import Chain, build_stages, compile_chain, degrade
-from .errors import ChainInputError, ChainInputTypeError
+from .checks import ChainInputError, ChainInputTypeError
 from .filters import design_lowpass, is_skipped, lowpass_gain
-from .noise_check import NoiseCheck, WindowStats, noise_check, window_stats
-from .noise_plot import plot_noise_check
 from .simulable import simulation_problem
 from .stages import (
     LowPass,
@@ -42,23 +42,18 @@ __all__ = [
     "ChainInputError",
     "ChainInputTypeError",
     "LowPass",
-    "NoiseCheck",
     "Quantise",
     "RunContext",
     "SameRate",
     "Sample",
     "Stage",
     "WhiteNoise",
-    "WindowStats",
     "build_stages",
     "compile_chain",
     "degrade",
     "design_lowpass",
     "is_skipped",
     "lowpass_gain",
-    "noise_check",
-    "plot_noise_check",
     "sample_grid",
     "simulation_problem",
-    "window_stats",
 ]

@@ -18,10 +18,10 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..api import check_real, check_seed, default_registry, resolve
+from ..arguments import check_real, check_seed, check_spec
 from ..specs import SensorSpec
-from ..stages import build_extra, place
-from .errors import check_node, check_rates, check_signal
+from ..stages import bind_listed, build_extra, place
+from .checks import check_node, check_rates, check_signal
 from .filters import design_lowpass
 from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise
 
@@ -157,18 +157,17 @@ def compile_chain(sensor: SensorSpec, fs: float, *, label: str = "") -> Chain:
     :class:`~sdt_framework.chain.ChainInputError` if the target rate is above
     ``fs`` or the digital cutoff is at or above the target Nyquist. Stages the
     profile lists that no registry bound yet (a profile built in Python) are
-    bound to :func:`~sdt_framework.api.default_registry`'s.
+    bound by :func:`sdt_framework.stages.bind_listed` (in the default registry).
     """
     fs = check_rates(fs, sensor, label)
-    if any(use.spec is None for use in sensor.stages):
-        sensor = default_registry().bind(sensor)
+    sensor = bind_listed(sensor)
     return _compile(_ByContent(sensor.at_rate(fs)), fs)
 
 
 def degrade(
     x: ArrayLike,
     fs: float,
-    sensor: SensorSpec | str,
+    sensor: SensorSpec,
     seed: int = 0,
     *,
     noise: bool = True,
@@ -189,9 +188,8 @@ def degrade(
     fs
         Recording rate F_ref, Hz (a real number).
     sensor
-        The profile, or the name of a registered one (``"adxl345"``, looked up
-        in :func:`sdt_framework.api.default_registry`); its chain is compiled
-        once per (profile, ``fs``).
+        The profile; its chain is compiled once per (profile, ``fs``).
+        :func:`sdt_framework.api.degrade` also takes a registered name.
     seed
         Base seed, an integer (1.5, "3" or True are refused, not rounded);
         row i's noise comes from ``seeding.rng(seed, id_i)``.
@@ -224,7 +222,7 @@ def degrade(
     sdt_framework.chain.ChainInputError
         A signal or rate the chain cannot take (shape, NaN, rate below the target).
     """
-    sensor = resolve(SensorSpec, sensor, "sensor")
+    sensor = check_spec(SensorSpec, sensor, "sensor")
     seed = check_seed(seed)
     fs = check_real(fs, "fs", "Hz")
     arr = check_signal(x, sensor, label)

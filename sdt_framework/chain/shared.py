@@ -23,7 +23,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..specs import SensorSpec
 from .chain import Chain, compile_chain
-from .errors import check_node, check_signal
+from .checks import check_node, check_signal
 from .stages import LowPass, RunContext, Sample, WhiteNoise
 
 __all__ = ["SharedPrefix", "prefix_key", "split_chain"]

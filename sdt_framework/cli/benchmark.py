@@ -91,39 +91,33 @@ def _sensor_names(value: str | None) -> list[str] | None:
 
 def _print_table4(results: Any, sensor_order: list[str]) -> None:
     """Table 4 in the terminal: one table per machine, scenario blocks, mean over ± SD."""
-    from ..bench.results import table4, table4_blocks
+    from ..bench.table4 import build_table4
 
-    wide = table4(results)
-    if wide.empty:
+    table = build_table4(results, sensor_order)
+    if table.empty:
         console.print("No successful runs: nothing to tabulate.")
         return
-    for machine in sorted({m for m, _, _ in wide.columns}):
-        classifiers = sorted({c for m, c, _ in wide.columns if m == machine})
+    for machine in sorted({m for m, _ in table.columns}):
+        wanted = [i for i, (m, _) in enumerate(table.columns) if m == machine]
         out = Table(title=f"Macro F1 (mean ± SD), {machine}", title_justify="left")
         out.add_column("scenario")
         out.add_column("sensor")
-        for clf in classifiers:
-            out.add_column(clf.upper(), justify="right")
-        for scenario, block, sensors in table4_blocks(wide, sensor_order):
-            for i, sensor in enumerate(sensors):
-                cells = []
-                for clf in classifiers:
-                    mean, sd = (
-                        block.loc[sensor, (machine, clf, "mean")],
-                        block.loc[sensor, (machine, clf, "sd")],
-                    )
-                    cells.append(
-                        "–"
-                        if mean != mean
-                        else f"{mean:.4f}" + ("" if sd != sd else f"\n±{sd:.4f}")
-                    )
+        for i in wanted:
+            out.add_column(table.columns[i][1].upper(), justify="right")
+        for block in table.blocks:
+            for k, (sensor, row) in enumerate(zip(block.sensors, block.cells, strict=True)):
+                cells = [row[i] for i in wanted]
                 out.add_row(
-                    scenario if i == 0 else "",
+                    block.scenario if k == 0 else "",
                     sensor,
-                    *cells,
-                    end_section=i == len(sensors) - 1,
+                    *("–" if c.mean != c.mean else f"{c.mean:.4f}" + _sd(c.sd) for c in cells),
+                    end_section=k == len(block.sensors) - 1,
                 )
         print_table(out)
+
+
+def _sd(sd: float) -> str:
+    return "" if sd != sd else f"\n±{sd:.4f}"
 
 
 def benchmark(

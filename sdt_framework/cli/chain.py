@@ -10,7 +10,7 @@ import typer
 from ..errors import SDTError
 from .common import console, err_console, print_json, print_table, registry
 
-__all__ = ["degrade_command", "register", "validate_noise_command"]
+__all__ = ["degrade_command", "validate_noise_command"]
 
 
 def degrade_command(
@@ -40,8 +40,8 @@ def degrade_command(
       sdt degrade pump.npy --sensor adxl345 --fs 20000 --seed 0 --out pump_adxl345.npy
     """
     from ..chain import degrade  # scipy.signal: imported on use so `sdt --help` starts fast
-    from ..chain.files import SUFFIXES, load_signal, save_array
     from .guards import check_output_file, os_errors
+    from .signal_io import SUFFIXES, load_signal, save_array
 
     with os_errors():
         spec = registry(ctx).sensor(sensor)
@@ -172,16 +172,16 @@ def validate_noise_command(
 
       sdt validate-noise --sensor adxl345 --recording SSX_Data.IDE --windows 4
     """
-    from ..chain import noise_check, plot_noise_check  # imported on use, as in degrade
-    from ..chain.allan import allan_seconds
-    from ..chain.allan_check import allan_check
-    from ..chain.files import load_signal, to_g
-    from ..chain.noise_check import zero_motion_cost
-    from ..chain.noise_plot import plot_formats
     from ..data.ide import is_ide
     from ..data.sizes import Cost
+    from ..validation import noise_check, plot_noise_check  # imported on use, as in degrade
+    from ..validation.allan import allan_seconds
+    from ..validation.allan_check import allan_check
+    from ..validation.noise_check import zero_motion_cost
+    from ..validation.noise_plot import plot_formats
     from .allan_table import print_allan_table
     from .guards import check_cost, check_output_file, os_errors
+    from .signal_io import load_signal, to_g
 
     with os_errors():
         spec = registry(ctx).sensor(sensor)
@@ -241,9 +241,3 @@ def _ide_axis(path: Path, channel: int | None, sensor: str, axis: str, fs: float
     _note(f"{path.name}: channel {channel} axis {axis}, {read.values.shape[1]} samples at "
           f"{read.rate_hz:.2f} Hz (measured from the timestamps)")  # fmt: skip
     return read.values[0], rate
-
-
-def register(app: typer.Typer) -> None:
-    """Add ``degrade`` and ``validate-noise`` to the root ``sdt`` app."""
-    app.command("degrade")(degrade_command)
-    app.command("validate-noise")(validate_noise_command)

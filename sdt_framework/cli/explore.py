@@ -75,7 +75,7 @@ def explore(
         raise typer.BadParameter("give a sweep file, or --example to print one", param_hint="SWEEP")
     from ..bench.interrupt import watch_interrupts
     from ..data.sizes import building
-    from ..explore.sweep import load_sweep
+    from ..explore.sweep_file import load_sweep
     from ..inputs import require_regular_file
 
     require_regular_file(sweep_file, "sweep file")

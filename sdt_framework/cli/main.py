@@ -1,7 +1,13 @@
-"""Entry point of the ``sdt`` command: the root app and user-error handling."""
+"""Entry point of the ``sdt`` command: the root app and user-error handling.
+
+Every command is registered one way: a command is a function in
+:data:`COMMANDS`, a group of subcommands is a Typer app in :data:`GROUPS`,
+each under the name the user types; adding one is adding its line here.
+"""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import typer
@@ -10,7 +16,7 @@ from . import classifiers, features, plugins, sensors, twin
 from . import dataset as dataset_cli
 from .benchmark import benchmark
 from .budget import budget
-from .chain import register as register_chain_commands
+from .chain import degrade_command, validate_noise_command
 from .compare import compare
 from .explore import explore
 from .failures import InterruptibleGroup, run
@@ -24,18 +30,29 @@ app = typer.Typer(
     rich_markup_mode="rich",
     cls=InterruptibleGroup,
 )
-app.add_typer(plugins.app, name="plugins")
-app.add_typer(sensors.app, name="sensors")
-app.add_typer(features.app, name="features")
-app.add_typer(classifiers.app, name="classifiers")
-app.add_typer(dataset_cli.app, name="dataset")
-app.add_typer(twin.app, name="twin")
-register_chain_commands(app)
-app.command("benchmark")(benchmark)
-app.command("report")(report)
-app.command("explore")(explore)
-app.command("budget")(budget)
-app.command("compare")(compare)
+#: command name -> the function it runs, in the order ``sdt --help`` lists them
+COMMANDS: dict[str, Callable[..., None]] = {
+    "degrade": degrade_command,
+    "validate-noise": validate_noise_command,
+    "benchmark": benchmark,
+    "report": report,
+    "explore": explore,
+    "budget": budget,
+    "compare": compare,
+}
+#: group name -> its Typer app of subcommands (``sdt sensors list``)
+GROUPS: dict[str, typer.Typer] = {
+    "plugins": plugins.app,
+    "sensors": sensors.app,
+    "features": features.app,
+    "classifiers": classifiers.app,
+    "dataset": dataset_cli.app,
+    "twin": twin.app,
+}
+for _name, _function in COMMANDS.items():
+    app.command(_name)(_function)
+for _name, _group in GROUPS.items():
+    app.add_typer(_group, name=_name)
 
 
 @app.callback()

@@ -82,9 +82,9 @@ def check(
 
       sdt --sensor-file fitted.toml twin check SSX66115.IDE --sensor adxl345-fitted --json
     """
-    from ..chain.noise_plot import plot_formats
     from ..twin import check_twin
     from ..twin.plot import plot_check
+    from ..validation.noise_plot import plot_formats
     from .guards import check_output_file
 
     if plot is not None:

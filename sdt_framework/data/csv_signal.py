@@ -24,7 +24,7 @@ columns (2.7x faster than ``numpy.loadtxt`` on 240 000 rows x 21 columns),
 numpy's C ``loadtxt`` for wider ones (pyarrow took 44 s on 2 rows x 240 000
 columns that ``loadtxt`` reads in 1 s; ``benchmarks/bench_csv_signal.py``).
 Both read the same cells (quotes are not special); only when parsing fails is
-the file scanned line by line (:mod:`~sdt_framework.data.csv_scan`), to name
+the file scanned line by line (:mod:`~sdt_framework.data.csv_bad_line`), to name
 the offending line.
 """
 
@@ -41,7 +41,7 @@ import pyarrow as pa
 import pyarrow.csv as pacsv
 from numpy.typing import NDArray
 
-from .csv_scan import locate_problem, not_utf8
+from .csv_bad_line import locate_problem, not_utf8
 from .recording import DataFileError
 from .tokens import brief, quote
 

@@ -24,7 +24,7 @@ import numpy as np
 
 from ..errors import SDTError
 from .cache import ArrayCache
-from .csvread import parse_nln_csv, read_header
+from .nln_emp_csv import parse_nln_csv, read_header
 from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
 
 __all__ = ["PAPER_SUBSETS", "NlnEmpDataset", "open_nln_emp", "parse_condition"]

@@ -1,7 +1,8 @@
 """The edge deployment budget: payload, LoRaWAN airtime, duty cycle, energy.
 
 Pure functions with their formulas and sources in each module's docstring
-(see also docs/edge.md).
+(see also docs/edge.md). Rounding the features to their on-node dtype is
+part of the benchmark's features: :func:`sdt_framework.features.quantise_features`.
 
 Public API
 ----------
@@ -14,8 +15,6 @@ region, REGIONS, Region, DataRate, phy_payload_bytes, OVERHEAD_BYTES
     LoRaWAN framing (13 bytes) and the EU868 / US915 data-rate plans.
 radio, RADIOS, Radio, energy_per_message_j
     Transmit energy from a current/voltage model (SX1276 datasheet defaults).
-quantise_features
-    Round features to their on-node dtype (float16 halves the payload).
 parse_interval, format_interval
     ``"10min"`` <-> 600 s.
 """
@@ -27,7 +26,6 @@ from .energy import DEFAULT_RADIO, RADIOS, Radio, energy_per_message_j, radio
 from .interval import format_interval, parse_interval
 from .lora import low_data_rate_optimize, payload_symbols, symbol_time_s, time_on_air_s
 from .lorawan import OVERHEAD_BYTES, REGIONS, DataRate, Region, phy_payload_bytes, region
-from .quantise import quantise_features
 
 __all__ = [
     "DEFAULT_RADIO",
@@ -47,7 +45,6 @@ __all__ = [
     "parse_interval",
     "payload_symbols",
     "phy_payload_bytes",
-    "quantise_features",
     "radio",
     "region",
     "report_bytes",

@@ -17,7 +17,8 @@ from .pareto import pareto_front, point_costs
 from .points import Point, build_points
 from .sensitivity import anova_shares, sensitivity
 from .stage_axes import check_stage_axes
-from .sweep import Sweep, load_sweep, parse_sweep
+from .sweep import Sweep
+from .sweep_file import load_sweep, parse_sweep
 
 __all__ = [
     "Point",

@@ -1,5 +1,7 @@
 """Design matrices: which parameter combinations a sweep evaluates.
 
+How each design samples is its entry in :data:`~sdt_framework.explore.designs.DESIGNS`:
+
 - ``grid``: the full factorial of every axis's levels (a range gives ``steps``
   levels, evenly spaced on its scale).
 - ``lhs``: a Latin hypercube of ``samples`` points (scipy.stats.qmc).
@@ -20,29 +22,18 @@ import itertools
 
 import numpy as np
 import pandas as pd
-from scipy.stats import qmc
 
 from ..data.sizes import building
-from ..errors import SDTError
+from .designs import DESIGNS
 from .size import design_size
-from .sweep import INTEGER_FIELDS, Axis, Sweep
+from .sweep import INTEGER_FIELDS, Axis, Sweep, axis_levels
 
-__all__ = ["axis_levels", "design_points", "salib_problem", "unit_column"]
+__all__ = ["design_points", "unit_column"]
 
 
 def unit_column(field: str) -> str:
     """Column holding a parameter's unit-cube coordinate."""
     return f"u_{field}"
-
-
-def axis_levels(axis: Axis) -> list[float]:
-    """The grid levels of an axis: its explicit levels, or ``steps`` across its range."""
-    if axis.levels is not None:
-        return [float(v) for v in axis.levels]
-    low, high = axis.range  # type: ignore[misc]
-    if axis.scale == "log":
-        return list(np.geomspace(low, high, axis.steps))
-    return list(np.linspace(low, high, axis.steps))
 
 
 def _to_value(axis: Axis, u: np.ndarray) -> np.ndarray:
@@ -55,34 +46,6 @@ def _to_value(axis: Axis, u: np.ndarray) -> np.ndarray:
     if axis.scale == "log":
         return np.exp(np.log(low) + u * (np.log(high) - np.log(low)))
     return low + u * (high - low)
-
-
-def salib_problem(sweep: Sweep) -> dict:
-    """SALib's problem definition: every axis on the unit interval."""
-    names = list(sweep.axes)
-    return {"num_vars": len(names), "names": names, "bounds": [[0.0, 1.0]] * len(names)}
-
-
-def _unit_design(sweep: Sweep) -> np.ndarray:
-    d = len(sweep.axes)
-    if sweep.design == "lhs":
-        return qmc.LatinHypercube(d=d, seed=sweep.seed).random(sweep.samples)
-    try:
-        if sweep.design == "sobol":
-            from SALib.sample import sobol
-
-            return sobol.sample(
-                salib_problem(sweep), sweep.samples, calc_second_order=False, seed=sweep.seed
-            )
-        from SALib.sample import morris
-
-        return morris.sample(
-            salib_problem(sweep), sweep.samples, num_levels=sweep.levels, seed=sweep.seed
-        )
-    except ImportError:
-        raise SDTError(
-            f"design {sweep.design!r} needs SALib; install it with `pip install SALib`"
-        ) from None
 
 
 def design_points(sweep: Sweep) -> pd.DataFrame:
@@ -100,7 +63,8 @@ def design_points(sweep: Sweep) -> pd.DataFrame:
 
 def _design_points(sweep: Sweep) -> pd.DataFrame:
     fields = list(sweep.axes)
-    if sweep.design == "grid":
+    sample = DESIGNS[sweep.design].sample
+    if sample is None:  # the full factorial of the axes' levels
         levels = [np.asarray(axis_levels(sweep.axes[f]), dtype=float) for f in fields]
         ranges = (range(len(values)) for values in levels)
         combos = np.array(list(itertools.product(*ranges)), dtype=np.intp).reshape(-1, len(fields))
@@ -109,7 +73,7 @@ def _design_points(sweep: Sweep) -> pd.DataFrame:
         for i, f in enumerate(fields):
             frame[unit_column(f)] = combos[:, i] / max(1, len(levels[i]) - 1)
     else:
-        unit = _unit_design(sweep)
+        unit = sample(sweep)
         frame = pd.DataFrame(
             {f: _to_value(sweep.axes[f], unit[:, i]) for i, f in enumerate(fields)}
         )

@@ -27,10 +27,9 @@ from collections.abc import Mapping
 import numpy as np
 import pandas as pd
 
-from .design import axis_levels
 from .effects import CELL
-from .stage_axes import StageAxis, finite_or_zero, is_stage_key, magnitude, stage_demand
-from .sweep import DEMAND, INTEGER_FIELDS, CostTerm, Sweep
+from .stage_axes import StageAxis, finite_or_zero, magnitude, stage_demand
+from .sweep import DEMAND, INTEGER_FIELDS, CostTerm, Sweep, axis_levels, is_stage_key
 
 __all__ = ["cost_terms", "demands", "pareto_front", "point_costs", "with_front"]
 

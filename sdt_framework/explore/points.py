@@ -22,6 +22,7 @@ import pandas as pd
 from pydantic import ValidationError
 
 from ..data.sizes import building
+from ..errors import field_errors
 from ..specs import SensorSpec
 from .stage_axes import StageAxis, require
 from .stage_values import with_stage_values
@@ -63,9 +64,7 @@ def point_name(base: str, values: dict[str, float], digits: int = 4) -> str:
 
 
 def _reason(exc: ValidationError) -> str:
-    first = exc.errors()[0]
-    field = ".".join(str(p) for p in first["loc"])
-    message = first["msg"].removeprefix("Value error, ")
+    field, message = field_errors(exc)[0]
     return f"{field}: {message}" if field else message
 
 

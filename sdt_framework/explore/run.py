@@ -17,9 +17,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import pandas as pd
-from pydantic import ValidationError
 
-from ..bench.config import BenchmarkConfig, config_error, quick_preset
+from ..bench.config import BenchmarkConfig, quick_preset, validate_config
 from ..bench.estimate import Estimate, unfit
 from ..bench.plan import Plan, plan_benchmark
 from ..errors import SDTError
@@ -124,10 +123,7 @@ def _refuse_unfit(points: int, size: Estimate) -> None:
 
 
 def _config(data: dict[str, Any], sensors: list[str] | None, where: str) -> BenchmarkConfig:
-    try:
-        return BenchmarkConfig.model_validate({**data, "sensors": sensors})
-    except ValidationError as exc:
-        raise config_error(exc, where) from None
+    return validate_config({**data, "sensors": sensors}, where)
 
 
 def explore_table(explore: ExplorePlan, results: pd.DataFrame) -> pd.DataFrame:

@@ -12,21 +12,23 @@
 - lhs: SALib's delta moment-independent measure (Plischke's raw estimator) and
   S1, with CIs.
 
-The SALib estimators need the whole design: if a point was skipped, the cell
-gets a row saying so instead of numbers.
+Which estimator a design gets is its entry in
+:data:`~sdt_framework.explore.designs.DESIGNS`. The SALib estimators need the
+whole design: if a point was skipped, the cell gets a row saying so instead of
+numbers.
 """
 
 from __future__ import annotations
 
 import itertools
-import warnings
 from collections.abc import Sequence
 
 import numpy as np
 import pandas as pd
 
 from ..seeding import rng
-from .design import salib_problem, unit_column
+from .design import unit_column
+from .designs import DESIGNS
 from .effects import CELL
 from .sweep import Sweep
 
@@ -101,29 +103,13 @@ def _salib_rows(cell: tuple, part: pd.DataFrame, sweep: Sweep, n_design: int) ->
     means = part.groupby("design_index")["macro_f1"].mean()
     if len(means) != n_design:
         note = f"{n_design - len(means)} of {n_design} design points were skipped; SALib needs all"
-        return [{**base, "method": sweep.design, "note": note}]
+        return [{**base, "method": DESIGNS[sweep.design].method, "note": note}]
     y = means.sort_index().to_numpy()
-    problem = salib_problem(sweep)
     units = part.drop_duplicates("design_index").sort_values("design_index")
     x = units[[unit_column(f) for f in sweep.axes]].to_numpy()
-    if sweep.design == "morris":
-        from SALib.analyze import morris
-
-        res = morris.analyze(problem, x, y, num_levels=sweep.levels, seed=sweep.seed)
-        indices = {"mu_star": "mu_star_conf", "sigma": None}
-    elif sweep.design == "sobol":
-        from SALib.analyze import sobol
-
-        res = sobol.analyze(problem, y, calc_second_order=False, seed=sweep.seed)
-        indices = {"S1": "S1_conf", "ST": "ST_conf"}
-    else:
-        from SALib.analyze import delta
-
-        with warnings.catch_warnings():  # SALib notes how it merged histogram bins
-            warnings.simplefilter("ignore")
-            res = dict(delta.analyze(problem, x, y, seed=sweep.seed))
-        res["delta"], res["delta_conf"] = res["delta_raw"], res["delta_raw_conf"]
-        indices = {"delta": "delta_conf", "S1": "S1_conf"}
+    design = DESIGNS[sweep.design]
+    res = design.analyse(sweep, x, y)  # type: ignore[misc]
+    indices = design.indices or {}
     rows = []
     for i, field in enumerate(sweep.axes):
         for index, conf in indices.items():
@@ -132,7 +118,7 @@ def _salib_rows(cell: tuple, part: pd.DataFrame, sweep: Sweep, n_design: int) ->
             rows.append(
                 {
                     **base,
-                    "method": sweep.design,
+                    "method": DESIGNS[sweep.design].method,
                     "term": field,
                     "index": index,
                     "value": value,
@@ -150,7 +136,7 @@ def sensitivity(results: pd.DataFrame, sweep: Sweep, n_design: int) -> pd.DataFr
     fields = list(sweep.axes)
     rows: list[dict] = []
     for cell, part in points.groupby(CELL, sort=True):
-        if sweep.design == "grid":
+        if DESIGNS[sweep.design].analyse is None:  # the ANOVA of a full factorial
             rows.extend(_grid_rows(cell, part, fields))
         else:
             rows.extend(_salib_rows(cell, part, sweep, n_design))

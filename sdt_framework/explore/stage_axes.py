@@ -1,6 +1,7 @@
 """Stage-parameter axes: sweeping a stage plugin's parameter (``"nonlinearity.second_pct_fs"``).
 
-A sweep key ``"<stage>.<param>"`` names a numeric (float or int) parameter of
+A sweep key ``"<stage>.<param>"`` (spelt as :func:`~sdt_framework.explore.sweep.is_stage_key`
+says) names a numeric (float or int) parameter of
 a registered stage's parameter model. A point sets it on the base profile's
 first listed stage of that name, or adds the stage (its other parameters at
 their defaults) when the base does not list it. The key itself is the
@@ -21,7 +22,6 @@ from __future__ import annotations
 
 import difflib
 import math
-import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -30,60 +30,27 @@ import numpy as np
 from pydantic import BaseModel
 
 from ..errors import SDTError, SpecFileError
+from .sweep import Sweep, axis_levels, is_stage_key
 
 if TYPE_CHECKING:
     from ..registry import Registry
     from ..specs import SensorSpec
     from ..stages import StageSpec
-    from .sweep import Sweep
 
 __all__ = [
     "NOT_MAGNITUDES",
     "StageAxis",
     "base_value",
     "check_stage_axes",
-    "flatten_stage_keys",
-    "is_stage_key",
     "stage_demand",
 ]
 
-#: ``<stage>.<param>``: a registered stage's name (as sensor names are spelt) and a parameter
-STAGE_KEY = re.compile(r"^[a-z0-9][a-z0-9._-]*\.[A-Za-z_][A-Za-z0-9_]*$")
 #: built-in stage parameters that are not error magnitudes: no direction is more demanding
 NOT_MAGNITUDES: dict[str, str] = {
     "gauss-markov.tau_s": "a correlation time, not an error magnitude",
     "nonlinearity.full_scale_g": "the full scale the % figures refer to, not an error magnitude",
 }
 _NUMERIC = (float, int, float | None, int | None)
-
-
-def is_stage_key(key: str) -> bool:
-    """Whether ``key`` is spelt as a stage parameter, ``"<stage>.<param>"``."""
-    return bool(STAGE_KEY.match(key))
-
-
-def flatten_stage_keys(table: Any, fields: tuple[str, ...], leaf: type) -> Any:
-    """``{stage: {param: x}}`` -> ``{"stage.param": x}``, for TOML's unquoted dotted keys.
-
-    ``nonlinearity.second_pct_fs = {levels = [...]}`` in TOML is a nested
-    table; a key that is not a SensorSpec field and maps to a table whose
-    values are all ``leaf`` (axis or cost tables: dict; ties: str) is read as
-    a stage's parameters.
-    """
-    if not isinstance(table, dict):
-        return table
-    out: dict[str, Any] = {}
-    for key, value in table.items():
-        if (
-            key not in fields
-            and isinstance(value, dict)
-            and value
-            and all(isinstance(v, leaf) for v in value.values())
-        ):
-            out.update({f"{key}.{param}": v for param, v in value.items()})
-        else:
-            out[key] = value
-    return out
 
 
 def stage_demand(key: str, spec: StageSpec | None = None) -> str:
@@ -212,8 +179,6 @@ def check_stage_axes(
 def _check_costs(
     sweep: Sweep, base: SensorSpec, axes: Mapping[str, StageAxis], where: object
 ) -> None:
-    from .design import axis_levels
-
     for key, term in sweep.cost.items():
         if key not in axes:
             continue

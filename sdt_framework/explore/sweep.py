@@ -13,31 +13,24 @@ and an optional ``[benchmark]`` table holding the protocol, exactly as
     [sweep.ties]
     digital_cutoff_hz = "0.4999 * rate"
 
-An axis may also be a chain-stage parameter, ``"nonlinearity.second_pct_fs"``
-(:mod:`~sdt_framework.explore.stage_axes`): spelt right here, checked against
-the registry's stages where the base sensor is resolved. Every error names the
-sweep file, the key and what to do, before any work.
+An axis may also be a chain-stage parameter, ``"nonlinearity.second_pct_fs"``:
+its spelling (:func:`is_stage_key`, and TOML's unquoted dotted keys read as
+one by :func:`flatten_stage_keys`) is part of this model; it is checked
+against the registry's stages where the base sensor is resolved
+(:mod:`~sdt_framework.explore.stage_axes`). The designs are the entries of
+:data:`~sdt_framework.explore.designs.DESIGNS`. Reading the file is
+:mod:`~sdt_framework.explore.sweep_file`.
 """
 
 from __future__ import annotations
 
-import os
-from pathlib import Path
+import re
 from typing import Any, Literal
 
-from pydantic import (
-    BaseModel,
-    ConfigDict,
-    Field,
-    ValidationError,
-    field_validator,
-    model_validator,
-)
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
-from ..bench.config_paths import resolve_written, written_by_sdt
-from ..errors import SpecFileError
-from ..toml_files import read_toml
-from .stage_axes import flatten_stage_keys, is_stage_key
+from .designs import DESIGNS
 from .ties import check_tie
 
 __all__ = [
@@ -48,7 +41,9 @@ __all__ = [
     "CostTerm",
     "Sweep",
     "Target",
-    "load_sweep",
+    "axis_levels",
+    "flatten_stage_keys",
+    "is_stage_key",
 ]
 
 #: SensorSpec field -> short name used in point names, ties and plots
@@ -79,6 +74,41 @@ DEMAND: dict[str, Literal["higher", "lower"]] = {
 }
 
 
+#: ``<stage>.<param>``: a registered stage's name (as sensor names are spelt) and a parameter
+STAGE_KEY = re.compile(r"^[a-z0-9][a-z0-9._-]*\.[A-Za-z_][A-Za-z0-9_]*$")
+#: the design names, in the order of the table of designs
+DesignName = Literal[tuple(DESIGNS)]  # type: ignore[valid-type]
+
+
+def is_stage_key(key: str) -> bool:
+    """Whether ``key`` is spelt as a stage parameter, ``"<stage>.<param>"``."""
+    return bool(STAGE_KEY.match(key))
+
+
+def flatten_stage_keys(table: Any, fields: tuple[str, ...], leaf: type) -> Any:
+    """``{stage: {param: x}}`` -> ``{"stage.param": x}``, for TOML's unquoted dotted keys.
+
+    ``nonlinearity.second_pct_fs = {levels = [...]}`` in TOML is a nested
+    table; a key that is not a SensorSpec field and maps to a table whose
+    values are all ``leaf`` (axis or cost tables: dict; ties: str) is read as
+    a stage's parameters.
+    """
+    if not isinstance(table, dict):
+        return table
+    out: dict[str, Any] = {}
+    for key, value in table.items():
+        if (
+            key not in fields
+            and isinstance(value, dict)
+            and value
+            and all(isinstance(v, leaf) for v in value.values())
+        ):
+            out.update({f"{key}.{param}": v for param, v in value.items()})
+        else:
+            out[key] = value
+    return out
+
+
 class _Model(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
@@ -107,6 +137,16 @@ class Axis(_Model):
             if self.scale == "log" and low <= 0:
                 raise ValueError(f"a log-scale range needs low > 0 (got {low:g})")
         return self
+
+
+def axis_levels(axis: Axis) -> list[float]:
+    """The grid levels of an axis: its explicit levels, or ``steps`` across its range."""
+    if axis.levels is not None:
+        return [float(v) for v in axis.levels]
+    low, high = axis.range  # type: ignore[misc]
+    if axis.scale == "log":
+        return list(np.geomspace(low, high, axis.steps))
+    return list(np.linspace(low, high, axis.steps))
 
 
 class CostTerm(_Model):
@@ -166,7 +206,7 @@ class Sweep(_Model):
     """A validated sweep: base sensor, axes, design, ties, cost model and target."""
 
     base: str = Field(description="Sensor the points start from (name, part[mode] or TOML).")
-    design: Literal["grid", "lhs", "sobol", "morris"] = Field(default="grid")
+    design: DesignName = Field(default="grid")
     samples: int = Field(
         default=16, ge=1, description="lhs: points; sobol: base N (power of 2); morris: paths."
     )
@@ -213,52 +253,13 @@ class Sweep(_Model):
             if key in self.axes:
                 raise ValueError(f"{key!r} is both swept and tied; keep one")
             check_tie(key, expression, SHORT_NAMES)
-        if self.design != "grid" and any(a.range is None for a in self.axes.values()):
-            explicit = [k for k, a in self.axes.items() if a.range is None]
-            if self.design in ("sobol", "morris"):
-                raise ValueError(
-                    f"design {self.design!r} needs ranges, but {explicit} give levels; "
-                    f"use design = 'grid' or give `range = [low, high]`"
-                )
-        if self.design == "sobol" and self.samples & (self.samples - 1):
-            raise ValueError(f"sobol needs samples as a power of two (got {self.samples})")
+        design = DESIGNS[self.design]
+        explicit = [k for k, a in self.axes.items() if a.range is None]
+        if design.needs_ranges and explicit:
+            raise ValueError(
+                f"design {self.design!r} needs ranges, but {explicit} give levels; "
+                f"use design = 'grid' or give `range = [low, high]`"
+            )
+        if design.power_of_two and self.samples & (self.samples - 1):
+            raise ValueError(f"{self.design} needs samples as a power of two (got {self.samples})")
         return self
-
-
-def _where(exc: ValidationError) -> tuple[str, str]:
-    first = exc.errors()[0]
-    field = ".".join(str(p) for p in first["loc"])
-    reason = first["msg"].removeprefix("Value error, ")
-    if first["type"] == "extra_forbidden":
-        reason = "unknown key"
-    return field, reason
-
-
-def load_sweep(path: str | os.PathLike[str]) -> tuple[Sweep, dict[str, Any]]:
-    """Read ``path``: the validated sweep and the raw ``[benchmark]`` table (protocol)."""
-    path = Path(path)
-    data = read_toml(
-        path, what="sweep file", missing="sweep file not found; `sdt explore --example` prints one"
-    )
-    unknown = sorted(set(data) - {"sweep", "benchmark"})
-    if unknown:
-        raise SpecFileError(path, unknown[0], "unknown table; a sweep has [sweep] and [benchmark]")
-    if "sweep" not in data:
-        raise SpecFileError(path, "sweep", "missing; `sdt explore --example` shows the format")
-    protocol = data.get("benchmark", {})
-    if not isinstance(protocol, dict):
-        raise SpecFileError(
-            path, "benchmark", f"must be a table of options, got {type(protocol).__name__}"
-        )
-    if written_by_sdt(path):  # an exploration's own sweep.toml: paths relative to its folder
-        protocol = resolve_written(protocol, path.parent)
-    return parse_sweep(data["sweep"], path), dict(protocol)
-
-
-def parse_sweep(table: dict[str, Any], where: str | os.PathLike[str] = "sweep") -> Sweep:
-    """Validate a ``[sweep]`` table; errors name ``where`` and the key."""
-    try:
-        return Sweep.model_validate(table)
-    except ValidationError as exc:
-        field, reason = _where(exc)
-        raise SpecFileError(where, f"sweep.{field}" if field else "sweep", reason) from None

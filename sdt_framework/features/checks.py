@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..api import real_array
+from ..arguments import real_array
 from ..errors import SDTError
 from ..specs import FeatureSetSpec
 

@@ -9,7 +9,7 @@ error names the part that misbehaved) and concatenates the columns.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 import numpy as np
 from pydantic import Field, field_validator
@@ -18,12 +18,17 @@ from ..errors import SDTError
 from ..specs import _NAME, FeatureSetSpec
 from .checks import check_feature_output
 
-if TYPE_CHECKING:
-    from ..registry import Registry
-
 __all__ = ["ComposedFeatureSetSpec", "compose", "resolve_feature_set"]
 
 SEPARATOR = "+"
+
+
+class FeatureSetLookup(Protocol):
+    """Where registered feature sets are looked up by name (a :class:`~sdt_framework.Registry`)."""
+
+    def feature_set(self, name: str) -> FeatureSetSpec:
+        """The feature set called ``name``."""
+        ...
 
 
 class ComposedFeatureSetSpec(FeatureSetSpec):
@@ -112,7 +117,7 @@ def compose(parts: Sequence[FeatureSetSpec]) -> FeatureSetSpec:
     )
 
 
-def resolve_feature_set(registry: Registry, name: str) -> FeatureSetSpec:
+def resolve_feature_set(registry: FeatureSetLookup, name: str) -> FeatureSetSpec:
     """The feature set called ``name``, composing ``"a+b+c"`` from registered parts.
 
     Parameters

@@ -15,27 +15,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..api import check_rate, default_registry
-from ..errors import ArgumentTypeError, SDTError
+from ..arguments import check_rate, check_spec
+from ..errors import SDTError
 from ..specs import FeatureSetSpec
 from .checks import check_bands, check_feature_output, check_signal
-from .compose import resolve_feature_set
 from .table import FeatureTable
 from .windowing import SETTLE_S, WINDOW_S, cut_windows
 
 __all__ = ["FeatureExtractor", "check_feature_output", "extract"]
-
-
-def _feature_set(value: object) -> FeatureSetSpec:
-    """A spec as is; a name (``"paper8"``, ``"paper8+env_bpfo"``) from the default registry."""
-    if isinstance(value, FeatureSetSpec):
-        return value
-    if isinstance(value, str):
-        return resolve_feature_set(default_registry(), value)
-    raise ArgumentTypeError(
-        f"feature_set must be a FeatureSetSpec or the name of a registered feature set "
-        f"(str, e.g. 'paper8'), got {type(value).__name__}"
-    )
 
 
 class FeatureExtractor:
@@ -44,21 +31,21 @@ class FeatureExtractor:
     Parameters
     ----------
     feature_set
-        The feature set (a registered or composed :class:`FeatureSetSpec`), or
-        its name (``"paper8"``, ``"paper8+env_bpfo"``), looked up in
-        :func:`sdt_framework.api.default_registry`.
+        The feature set (a registered or composed :class:`FeatureSetSpec`);
+        :func:`sdt_framework.api.extract` also takes its name (``"paper8"``,
+        ``"paper8+env_bpfo"``).
     window_s, settle_s
         Window length and settling interval, seconds (SPEC: 0.64 and 0.1).
     """
 
     def __init__(
         self,
-        feature_set: FeatureSetSpec | str,
+        feature_set: FeatureSetSpec,
         *,
         window_s: float = WINDOW_S,
         settle_s: float = SETTLE_S,
     ) -> None:
-        self.feature_set = _feature_set(feature_set)
+        self.feature_set = check_spec(FeatureSetSpec, feature_set, "feature_set")
         self.window_s = window_s
         self.settle_s = settle_s
 
@@ -129,7 +116,7 @@ class FeatureExtractor:
 def extract(
     x: np.ndarray,
     fs: float,
-    feature_set: FeatureSetSpec | str,
+    feature_set: FeatureSetSpec,
     *,
     window_s: float = WINDOW_S,
     settle_s: float = SETTLE_S,
@@ -139,7 +126,7 @@ def extract(
 
     Examples
     --------
-    >>> table = extract(signal_g, 3200.0, "paper8")  # doctest: +SKIP
+    >>> table = extract(signal_g, 3200.0, registry.feature_set("paper8"))  # doctest: +SKIP
     >>> table.to_frame().head()  # doctest: +SKIP
     """
     extractor = FeatureExtractor(feature_set, window_s=window_s, settle_s=settle_s)

@@ -23,19 +23,23 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 import numpy as np
 
 from ..errors import SDTError
 from ..specs import FeatureSetSpec
 
-if TYPE_CHECKING:
-    from ..registry import Registry
-
 __all__ = ["Feature", "feature"]
 
 FeatureFunction = Callable[[np.ndarray, float], Any]
+
+
+class SpecSink(Protocol):
+    """Where a decorated feature registers itself (a :class:`~sdt_framework.Registry`)."""
+
+    def add(self, spec: FeatureSetSpec) -> object:
+        """Register ``spec``."""
 
 
 class Feature:
@@ -83,7 +87,7 @@ def feature(
     source: str = "",
     bytes_per_value: int | None = None,
     dtype: str | None = None,
-    registry: Registry | None = None,
+    registry: SpecSink | None = None,
 ) -> Callable[[FeatureFunction], Feature]:
     """Turn ``function(windows, fs) -> (n_windows,)`` into a registrable feature.
 

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..api import check_real
+from ..arguments import check_real
 from ..errors import ArgumentValueError, SDTError
 
 __all__ = ["SETTLE_S", "WINDOW_S", "Windows", "cut_windows", "samples_for"]

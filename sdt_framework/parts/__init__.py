@@ -9,7 +9,7 @@ A plugin registers a :class:`PartSpec` through the ``register_parts`` hook;
 from __future__ import annotations
 
 from .error_modes import ERROR_KEYS, ErrorTermsError, TermSource
-from .errors import TERMS, ErrorTerm
+from .error_terms import TERMS, ErrorTerm
 from .files import load_part_file, load_part_text
 from .model import CHAIN_VALUES, AxisValues, Document, Entry, Mode, PartSpec, Price
 from .names import canonical_name, split_name, split_names

@@ -25,8 +25,8 @@ from dataclasses import asdict, dataclass
 from typing import Any
 
 from ..errors import SDTError
-from ..stage_use import StageUse, Tolerance
-from .errors import REFERENCE_C, TERMS, ErrorTerm
+from ..specs.stage_use import StageUse, Tolerance
+from .error_terms import REFERENCE_C, TERMS, ErrorTerm
 from .values import Document
 
 __all__ = [

@@ -10,10 +10,7 @@ from __future__ import annotations
 import os
 from typing import Any
 
-from pydantic import ValidationError
-
-from ..errors import SpecFileError
-from ..toml_files import parse_toml, read_toml
+from ..toml_files import parse_toml, read_toml, validate_file
 from .model import PartSpec
 
 __all__ = ["load_part_file", "load_part_text"]
@@ -25,15 +22,8 @@ def load_part_text(text: str, where: str | os.PathLike[str]) -> PartSpec:
 
 
 def _validate(data: dict[str, Any], where: str | os.PathLike[str]) -> PartSpec:
-    try:
-        return PartSpec.model_validate(data)
-    except ValidationError as exc:
-        first = exc.errors()[0]
-        field = ".".join(str(part) for part in first["loc"])
-        reason = first["msg"].removeprefix("Value error, ")
-        if first.get("type") == "extra_forbidden":
-            reason = "unknown field (see the part format in docs/sensors.md)"
-        raise SpecFileError(where, field, reason) from None
+    unknown = "unknown field (see the part format in docs/sensors.md)"
+    return validate_file(PartSpec, data, where, unknown=unknown)
 
 
 def load_part_file(path: str | os.PathLike[str]) -> PartSpec:

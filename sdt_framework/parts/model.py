@@ -14,7 +14,7 @@ The model checks the structure once, when a part is registered: every chain
 value is determined for every mode, every document exists, a value is set by
 at most one mode key. :mod:`sdt_framework.parts.resolve` turns a part and a
 mode into a :class:`~sdt_framework.specs.SensorSpec`. A part's datasheet error
-terms (``[errors.<term>]``, :mod:`sdt_framework.parts.errors`) stay off unless
+terms (``[errors.<term>]``, :mod:`sdt_framework.parts.error_terms`) stay off unless
 the mode enables them.
 """
 
@@ -26,7 +26,7 @@ from typing import Any, ClassVar, Literal
 from pydantic import Field, field_validator, model_validator
 
 from ..specs import Spec
-from .errors import ErrorTerm, check_terms
+from .error_terms import ErrorTerm, check_terms
 from .values import AxisValues, Basis, Document, Entry, Model, Price
 
 __all__ = [
@@ -142,7 +142,7 @@ class PartSpec(Spec):
     errors: dict[str, ErrorTerm] = Field(
         default_factory=dict,
         description="Datasheet error terms (offset_tempco, sensitivity_tempco, nonlinearity, "
-        "cross_axis); off unless a mode enables them (sdt_framework.parts.errors).",
+        "cross_axis); off unless a mode enables them (sdt_framework.parts.error_terms).",
     )
 
     @model_validator(mode="after")

@@ -20,9 +20,9 @@ from itertools import product
 
 from pydantic import ValidationError
 
-from ..errors import SDTError
+from ..errors import SDTError, field_errors
 from ..specs import SensorSpec
-from ..stage_use import StageUse, Tolerance
+from ..specs.stage_use import StageUse, Tolerance
 from .error_modes import (
     ERROR_KEYS,
     TermSource,
@@ -241,4 +241,4 @@ def _sensor(
             **fields,  # type: ignore[arg-type]
         )
     except ValidationError as exc:
-        raise ModeError(f"part {part.name!r} in mode {name}: {exc.errors()[0]['msg']}") from None
+        raise ModeError(f"part {part.name!r} in mode {name}: {field_errors(exc)[0][1]}") from None

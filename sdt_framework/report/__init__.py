@@ -1,5 +1,11 @@
 """Reports: the paper's tables and figures from a results folder.
 
+Plots: a figure is drawn in the package whose results it shows (the
+zero-motion check in :mod:`sdt_framework.validation`, the twin check in
+``twin/plot.py``, the critical-difference diagram in ``verdict/cdplot.py``);
+this package draws the benchmark's own figures and composes the document,
+reusing those ``draw_*`` functions.
+
 Public API
 ----------
 write_report(results_dir, formats=("md", "html"), *, registry=None) -> dict[str, Path]

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
-__all__ = ["Block", "Code", "Figure", "Heading", "Items", "Paragraph", "Table", "parse_md_table"]
+__all__ = ["Block", "Code", "Figure", "Heading", "Items", "Paragraph", "Table"]
 
 
 @dataclass(frozen=True)
@@ -65,25 +65,3 @@ class Figure:
 
 
 Block = Heading | Paragraph | Items | Code | Table | Figure
-
-
-def parse_md_table(text: str) -> Table:
-    """Turn a pipe table (as ``bench.results.table4_markdown`` writes it) into a :class:`Table`.
-
-    Lines before the table are ignored; non-empty lines after it become the note.
-    """
-    lines = text.strip().splitlines()
-    rows: list[tuple[str, ...]] = []
-    note: list[str] = []
-    for line in lines:
-        if line.startswith("|"):
-            cells = tuple(c.strip() for c in line.strip().strip("|").split("|"))
-            if not all(set(c) <= set("-: ") for c in cells):
-                rows.append(cells)
-        elif rows and line.strip():
-            note.append(line.strip())
-    if not rows:
-        return Table(("",), ((text.strip(),),))
-    width = len(rows[0])
-    body = tuple(r + ("",) * (width - len(r)) for r in rows[1:])
-    return Table(rows[0], body, " ".join(note))

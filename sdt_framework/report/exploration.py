@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ..explore.designs import DESIGNS
 from .document import Block, Figure, Heading, Paragraph, Table
 from .style import new_figure, save_figure
 
@@ -38,7 +39,7 @@ def _read(folder: Path) -> dict[str, pd.DataFrame] | None:
 
 def _ranking(sens: pd.DataFrame) -> pd.DataFrame:
     best = sens[(sens["classifier"] == BEST) & sens["term"].notna()]
-    first = {"anova": "share", "morris": "mu_star", "sobol": "ST", "lhs": "delta"}
+    first = {design.method: design.headline for design in DESIGNS.values()}
     best = best[best["index"] == best["method"].map(first)]
     return best[~best["term"].astype(str).str.contains(":|residual")]
 

@@ -14,8 +14,8 @@ import numpy as np
 from matplotlib.figure import Figure
 from scipy import signal
 
-from ..chain import NoiseCheck
-from ..chain.noise_plot import draw_noise
+from ..validation import NoiseCheck
+from ..validation.noise_plot import draw_noise
 from .signals import SensorTrace
 from .style import LINESTYLES, new_figure
 
@@ -105,7 +105,7 @@ def plot_noise(checks: Sequence[NoiseCheck], colors: dict[str, str]) -> Figure:
     """(a) First 50 ms of each profile's zero-motion output, mg; (b) its ASD, µg/√Hz.
 
     Every noisy profile in one figure with the report's sensor colours, drawn by
-    :func:`sdt_framework.chain.noise_plot.draw_noise` exactly as
+    :func:`sdt_framework.validation.noise_plot.draw_noise` exactly as
     ``sdt validate-noise --plot`` draws one.
     """
     fig = new_figure(12, 4.4)

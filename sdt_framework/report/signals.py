@@ -3,7 +3,7 @@
 Fig. 2 needs a recording of the benchmark's own dataset, re-opened from the
 configuration exactly as ``sdt benchmark`` opened it, degraded by each sensor.
 Fig. 4 needs the zero-motion chain output of each sensor that injects noise,
-which :func:`sdt_framework.chain.noise_check` already computes.
+which :func:`sdt_framework.validation.noise_check` already computes.
 """
 
 from __future__ import annotations
@@ -15,11 +15,12 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..bench.config import BenchmarkConfig
-from ..chain import NoiseCheck, degrade, noise_check
+from ..chain import degrade
 from ..data.open import open_dataset
 from ..data.recording import Recording
 from ..errors import SDTError
 from ..specs import SensorSpec
+from ..validation import NoiseCheck, noise_check
 
 __all__ = ["SensorTrace", "degrade_all", "noise_checks", "open_config_dataset", "pick_recording"]
 

@@ -1,8 +1,8 @@
 """The report's tables as data: Table 4, deltas to the reference, allocation, failures.
 
-Table 4 itself comes from :func:`sdt_framework.bench.results.table4_markdown`
-(the same text as ``table4.md``); the delta table is built from the same
-:func:`~sdt_framework.bench.results.table4` pivot so both always agree.
+Table 4 is the one :class:`~sdt_framework.bench.table4.Table4` built from the
+results (``table4.md`` is its Markdown); the delta table is built from the same
+:func:`~sdt_framework.bench.table4.table4` pivot so both always agree.
 """
 
 from __future__ import annotations
@@ -10,15 +10,19 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..bench.results import SCENARIO_TITLES, table4, table4_blocks, table4_markdown
-from .document import Table, parse_md_table
+from ..bench.results import SCENARIO_TITLES
+from ..bench.table4 import EMPTY, NOTE, build_table4, table4, table4_blocks
+from .document import Table
 
 __all__ = ["allocation_table", "delta_table", "failed_table", "table4_table"]
 
 
 def table4_table(results: pd.DataFrame, sensors: list[str]) -> Table:
     """Paper Table 4: mean ± SD Macro F1 per scenario/sensor x machine/classifier."""
-    return parse_md_table(table4_markdown(results, sensors))
+    table = build_table4(results, sensors)
+    if table.empty:
+        return Table(("",), ((EMPTY,),))
+    return Table(table.header, tuple(table.rows()), NOTE)
 
 
 def delta_table(results: pd.DataFrame, sensors: list[str], reference: str) -> Table | None:

@@ -6,10 +6,9 @@ import numpy as np
 from sklearn.base import BaseEstimator, TransformerMixin
 from sklearn.utils.validation import check_is_fitted, validate_data
 
-from sdt_framework.features import extract, resolve_feature_set
+from sdt_framework.api import resolve
+from sdt_framework.features import extract
 from sdt_framework.specs import FeatureSetSpec
-
-from ._registry import installed_registry
 
 __all__ = ["FeatureExtractor"]
 
@@ -17,7 +16,7 @@ __all__ = ["FeatureExtractor"]
 def _resolve(feature_set: str | FeatureSetSpec) -> FeatureSetSpec:
     if isinstance(feature_set, FeatureSetSpec):
         return feature_set
-    return resolve_feature_set(installed_registry(), str(feature_set))
+    return resolve(FeatureSetSpec, str(feature_set), "feature_set")
 
 
 class FeatureExtractor(TransformerMixin, BaseEstimator):

@@ -8,14 +8,13 @@ import numpy as np
 from sklearn.base import BaseEstimator, ClassNamePrefixFeaturesOutMixin, TransformerMixin
 from sklearn.utils.validation import check_is_fitted, validate_data
 
-from sdt_framework.api import check_rate, check_real, check_seed
+from sdt_framework.api import resolve
+from sdt_framework.arguments import check_rate, check_real, check_seed
 from sdt_framework.chain import compile_chain, degrade
 from sdt_framework.chain.stages import sample_count
 from sdt_framework.errors import ArgumentValueError, SDTError
 from sdt_framework.features import samples_for
 from sdt_framework.specs import SensorSpec
-
-from ._registry import installed_registry
 
 __all__ = ["SensorTwin", "row_noise_ids"]
 
@@ -39,7 +38,7 @@ def row_noise_ids(X: np.ndarray) -> list[int]:
 def _resolve_sensor(sensor: str | SensorSpec) -> SensorSpec:
     if isinstance(sensor, SensorSpec):
         return sensor
-    return installed_registry().sensor(str(sensor))
+    return resolve(SensorSpec, str(sensor), "sensor")
 
 
 class SensorTwin(ClassNamePrefixFeaturesOutMixin, TransformerMixin, BaseEstimator):

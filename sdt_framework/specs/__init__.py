@@ -6,7 +6,8 @@ a plugin is an error rather than a silently ignored setting. Each spec carries
 from the content hash) and a ``source`` reference (datasheet, paper, URL).
 
 One module per kind: :mod:`.base` (:class:`Spec`), :mod:`.sensor`,
-:mod:`.features`, :mod:`.classifier`, :mod:`.dataset`. This package re-exports
+:mod:`.features`, :mod:`.classifier`, :mod:`.dataset`, and :mod:`.stage_use`
+(a profile's extra stages and tolerances, as data). This package re-exports
 them, so ``from sdt_framework.specs import SensorSpec`` is the import to use.
 """
 
@@ -24,6 +25,7 @@ from .sensor import NATIVE as NATIVE
 from .sensor import POINT_SUFFIX as POINT_SUFFIX
 from .sensor import Axis as Axis
 from .sensor import SensorSpec
+from .stage_use import StageUse, Tolerance
 
 __all__ = [
     "ClassifierSpec",
@@ -32,4 +34,6 @@ __all__ = [
     "FeatureSetSpec",
     "SensorSpec",
     "Spec",
+    "StageUse",
+    "Tolerance",
 ]

@@ -7,8 +7,8 @@ from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import Field, field_validator, model_validator
 
-from ..stage_use import StageUse, Tolerance
 from .base import _NAME, Spec
+from .stage_use import StageUse, Tolerance
 
 __all__ = ["SensorSpec"]
 

@@ -5,21 +5,37 @@ unknown stage name or parameters its model rejects become one-line
 :class:`~sdt_framework.errors.SDTError` messages naming the sensor and the
 stage. :func:`place` merges the bound stages with the chain's own stages in
 the order :data:`~sdt_framework.stages.spec.ANCHORS` fixes.
+
+A profile built in Python (``SensorSpec.model_validate({...})``) lists stages
+no registry bound yet. :func:`bind_listed` binds them with the binder the
+layer above installed (:mod:`sdt_framework.registry` installs its
+``default_registry().bind`` when imported, which importing ``sdt_framework``
+does), so the chain below the registry never imports it.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from pydantic import ValidationError
 
 from ..errors import SDTError, UnknownNameError, validation_summary
 from ..specs import SensorSpec
-from ..stage_use import StageUse
+from ..specs.stage_use import StageUse
 from .spec import ANCHORS, StageContext, StageSpec
 
-__all__ = ["bind_stages", "build_extra", "is_random", "place", "uses_node"]
+__all__ = [
+    "bind_listed",
+    "bind_stages",
+    "build_extra",
+    "install_stage_binder",
+    "is_random",
+    "place",
+    "uses_node",
+]
+
+_binder: Callable[[SensorSpec], SensorSpec] | None = None
 
 
 def _check(sensor: str, use: StageUse, spec: StageSpec) -> dict[str, Any]:
@@ -89,6 +105,30 @@ def bind_stages(sensor: SensorSpec, table: Mapping[str, StageSpec]) -> SensorSpe
     if len(samplers) > 1:
         raise SDTError(f"sensor {sensor.name!r}: at most one sampler stage, got {samplers}")
     return sensor.model_copy(update={"stages": tuple(bound)})
+
+
+def install_stage_binder(binder: Callable[[SensorSpec], SensorSpec]) -> None:
+    """Bind the unbound stages of a profile with ``binder`` from now on (the registry's)."""
+    global _binder
+    _binder = binder
+
+
+def bind_listed(sensor: SensorSpec) -> SensorSpec:
+    """``sensor`` with every listed stage bound: as is if bound, else by the installed binder.
+
+    Raises
+    ------
+    SDTError
+        Unbound stages and no binder installed (``sdt_framework.registry`` not imported).
+    """
+    if all(use.spec is not None for use in sensor.stages):
+        return sensor
+    if _binder is None:
+        raise SDTError(
+            f"sensor {sensor.name!r} lists stages no registry bound; bind it first "
+            "with Registry.bind(sensor)"
+        )
+    return _binder(sensor)
 
 
 def is_random(sensor: SensorSpec) -> bool:

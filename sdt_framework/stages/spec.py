@@ -28,7 +28,7 @@ from typing import Any, ClassVar, Literal
 from pydantic import BaseModel, Field, field_validator, model_validator
 
 from ..specs import Spec
-from ..stage_use import StageUse, Tolerance
+from ..specs.stage_use import StageUse, Tolerance
 
 __all__ = [
     "ANCHORS",

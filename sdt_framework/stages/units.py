@@ -17,7 +17,7 @@ from pydantic import ValidationError
 from ..errors import SDTError, validation_summary
 from ..seeding import rng
 from ..specs import MODE_SUFFIX, POINT_SUFFIX, SensorSpec
-from ..stage_use import StageUse, Tolerance
+from ..specs.stage_use import StageUse, Tolerance
 
 __all__ = ["base_name", "draw", "draw_unit", "has_tolerances"]
 

@@ -8,7 +8,8 @@ is not the twin's fault (the device's real output rate, the time offset, the
 sign and the mounting's axis alignment). :func:`fit_twin` estimates from the
 pair the profile values the data can support and writes an ordinary sensor
 profile with provenance. This package sits above ``chain`` and ``data`` and
-uses them; nothing below imports it.
+uses them; nothing below imports it. Its figure is drawn here (``plot.py``),
+as every package draws the figures of its own results (see :mod:`sdt_framework.report`).
 """
 
 from __future__ import annotations

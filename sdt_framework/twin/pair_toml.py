@@ -29,14 +29,14 @@ from pathlib import Path
 from typing import Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, PositiveFloat, ValidationError, model_validator
+from pydantic import BaseModel, ConfigDict, Field, PositiveFloat, model_validator
 
 from ..data.csv_signal import read_csv_signal
 from ..data.recording import DataFileError
 from ..data.signal_files import read_signal
 from ..data.timebase import on_even_grid
-from ..errors import SDTError, validation_summary
-from ..toml_files import read_toml
+from ..errors import SDTError
+from ..toml_files import read_toml, validate_file
 from .signals import Pair, Signal
 
 __all__ = ["PairSignal", "is_pair_toml", "load_toml_pair"]
@@ -133,10 +133,7 @@ def _digest(path: Path, parts: list[Path]) -> str:
 def load_toml_pair(path: str | Path, axes: list[str] | None = None) -> Pair:
     """The pair described by the TOML file at ``path``, on the axes both sides share."""
     path = Path(path)
-    try:
-        parsed = _PairFile.model_validate(read_toml(path, what="pair file"))
-    except ValidationError as exc:
-        raise SDTError(f"{path}: {validation_summary(exc)}") from None
+    parsed = validate_file(_PairFile, read_toml(path, what="pair file"), path)
     try:
         ref = _signal(path.parent, "reference", parsed.reference)
         dev = _signal(path.parent, "device", parsed.device)

@@ -5,7 +5,7 @@ on the axis with the most motion, judgeable bands shaded. (b) The transfer
 function twin -> device (gain in dB; 0 dB is a perfect twin) with its
 coherence. Drawn with the Agg backend through ``matplotlib.figure.Figure`` (no
 pyplot state), saved atomically; the figures live with the check they draw,
-as the zero-motion check's do (``chain.noise_plot``).
+as the zero-motion check's do (``validation.noise_plot``).
 """
 
 from __future__ import annotations

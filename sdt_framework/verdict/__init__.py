@@ -3,7 +3,9 @@
 Pure functions on the tidy results table (and the per-recording confusion
 counts), above ``bench`` results and below ``report`` and the CLI: nothing
 here reads or writes files, so the same numbers feed ``sdt compare``, the
-report's verdict section and a user's notebook.
+report's verdict section and a user's notebook. Its one figure, the
+critical-difference diagram, is drawn here (``cdplot.py``), as every package
+draws the figures of its own results (see :mod:`sdt_framework.report`).
 
 Public API
 ----------

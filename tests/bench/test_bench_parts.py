@@ -11,14 +11,14 @@ import pytest
 from typer.testing import CliRunner
 
 from sdt_framework import build_registry
-from sdt_framework.bench.featurize import FeatureJob, featurize_recording
+from sdt_framework.api import extract
+from sdt_framework.bench.featurise import FeatureJob, featurise_recording
 from sdt_framework.bench.plan import plan_benchmark
 from sdt_framework.cli.main import app
 from sdt_framework.data import open_manifest
 from sdt_framework.errors import SDTError
-from sdt_framework.features import extract
 
-pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog (make does)")
+pytestmark = pytest.mark.catalog
 
 
 def write_manifest(folder: Path, fs: float, seconds: float = 1.5) -> Path:
@@ -112,7 +112,7 @@ def test_a_channel_on_the_z_axis_gets_the_z_noise(tmp_path, registry):
 
     def sigma(axis: str) -> float:
         job = FeatureJob(recording, "k", (part,), feature_set, 1, 0, 0.64, 0.1, None, axis)
-        [block] = featurize_recording(job).blocks
+        [block] = featurise_recording(job).blocks
         assert block.sensor == part.name  # the axis changes the figures, not the name
         return float(np.mean(block.values[:, 0]))
 

@@ -56,7 +56,7 @@ def test_degrade_npy_writes_output_and_summary(monkeypatch, capsys, signal, tmp_
 
 
 def test_degrade_csv_round_trip_matches_python(monkeypatch, capsys, signal, tmp_path) -> None:
-    from sdt_framework.chain import degrade
+    from sdt_framework.api import degrade
     from sdt_framework.registry import build_registry
 
     x = np.load(signal)

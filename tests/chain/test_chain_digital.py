@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sdt_framework.chain import Quantise, RunContext, WhiteNoise, degrade
+from sdt_framework.api import degrade
+from sdt_framework.chain import Quantise, RunContext, WhiteNoise
 from sdt_framework.specs import SensorSpec
 
 

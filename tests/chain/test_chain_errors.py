@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sdt_framework.chain import ChainInputError, degrade
+from sdt_framework.api import degrade
+from sdt_framework.chain import ChainInputError
 from sdt_framework.errors import SDTError
 from sdt_framework.specs import SensorSpec
 

@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from sdt_framework import SensorSpec, build_registry
-from sdt_framework.chain import build_stages, degrade, simulation_problem
+from sdt_framework.api import degrade
+from sdt_framework.chain import build_stages, simulation_problem
 
 MEMS = dict(
     name="mems",

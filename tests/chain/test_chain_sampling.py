@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sdt_framework.chain import RunContext, Sample, degrade, design_lowpass, lowpass_gain
+from sdt_framework.api import degrade
+from sdt_framework.chain import RunContext, Sample, design_lowpass, lowpass_gain
 from sdt_framework.chain.stages import sample_count
 from sdt_framework.specs import SensorSpec
 

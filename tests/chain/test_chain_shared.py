@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade
 from sdt_framework.chain.chain import compile_chain
 from sdt_framework.chain.shared import SharedPrefix, prefix_key, split_chain
 from sdt_framework.specs import SensorSpec

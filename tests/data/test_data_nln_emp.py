@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sdt_framework.data import csvread, open_nln_emp, parse_condition
+from sdt_framework.data import nln_emp_csv, open_nln_emp, parse_condition
 from sdt_framework.errors import SDTError
 
 STEP = 5e-05
@@ -100,7 +100,7 @@ def test_values_and_subset_options(tree: Path, tmp_path: Path) -> None:
 
 def test_cache_hit_and_invalidation(tree: Path, tmp_path: Path, monkeypatch) -> None:
     calls = []
-    real = csvread.parse_nln_csv
+    real = nln_emp_csv.parse_nln_csv
 
     def counting(path, *args, **kwargs):
         calls.append(Path(path).name)

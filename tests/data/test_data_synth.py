@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 from scipy import signal
 
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade
 from sdt_framework.data import open_synthetic, synth_dataset
 from sdt_framework.data import synth_model as model
 from sdt_framework.data.synth import generate_run

@@ -7,8 +7,7 @@ import pytest
 from pydantic import ValidationError
 
 from sdt_framework import FeatureSetSpec, SDTError
-from sdt_framework.edge import quantise_features
-from sdt_framework.features import compose, feature
+from sdt_framework.features import compose, feature, quantise_features
 
 
 def _one(windows, fs):

@@ -18,7 +18,7 @@ from sdt_framework.bench.runner import plan_benchmark, run_benchmark
 from sdt_framework.cli.main import app
 from sdt_framework.explore.output import EXPLORE_FILES, write_explore
 from sdt_framework.explore.run import explore_table, plan_explore
-from sdt_framework.explore.sweep import parse_sweep
+from sdt_framework.explore.sweep_file import parse_sweep
 
 #: Motor-2 only, 1.5 s acquisitions, two channels, lr, two repetitions: seconds, not minutes
 PROTOCOL = {

@@ -349,8 +349,8 @@ def test_max_loss_to_base_measures_from_the_base_sensor():
     assert table.loc["offset.offset_mg", "target"] == "loss to base <= 0.06"
 
 
+@pytest.mark.catalog
 def test_a_part_in_a_mode_at_85c_is_a_base_and_keeps_its_temperature(registry):
-    pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog")
     base = registry.sensor("adxl345-ds[errors=datasheet,cross_axis=off,temp=85c]")
     sweep = {"base": base.name, "axes": {"scale.tempco_pct_per_c": {"levels": [0.01, 0.1]}}}
     points, skipped = points_of(sweep, base, registry)

@@ -14,9 +14,10 @@ from sdt_plugins.features import paper8
 from typer.testing import CliRunner
 
 from sdt_framework import Registry, build_registry
+from sdt_framework.api import extract
 from sdt_framework.cli.main import app, main
 from sdt_framework.errors import SDTError
-from sdt_framework.features import extract, feature, read_feature_table
+from sdt_framework.features import feature, read_feature_table
 
 FS = 3200.0
 

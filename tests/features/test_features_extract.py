@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 from sdt_framework import FeatureSetSpec
+from sdt_framework.api import extract
 from sdt_framework.errors import SDTError
-from sdt_framework.features import FeatureTable, extract
+from sdt_framework.features import FeatureTable
 
 FS = 3200.0
 SIGNAL = np.random.default_rng(0).normal(size=(2, 320 + 3 * 2048))

@@ -13,7 +13,7 @@ import pytest
 import scipy.stats
 from sdt_plugins.features.paper8 import PAPER8
 
-from sdt_framework.features import extract
+from sdt_framework.api import extract
 
 G = 9.80665
 ORDER = {name: i for i, name in enumerate(PAPER8.feature_names)}

@@ -10,8 +10,9 @@ import pytest
 from sdt_plugins.features import paper8
 
 from sdt_framework import FeatureSetSpec, Registry, build_registry, hookimpl
+from sdt_framework.api import extract
 from sdt_framework.errors import SDTError, UnknownNameError
-from sdt_framework.features import Feature, extract, feature, resolve_feature_set
+from sdt_framework.features import Feature, feature, resolve_feature_set
 from sdt_framework.hookspecs import Register
 
 FS = 4000.0

@@ -56,6 +56,7 @@ def installed(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return target
 
 
+@pytest.mark.catalog
 def test_installed_example_appears_in_sensors_and_plugins(installed):
     sensors = {s["name"]: s for s in sdt_json("sensors", "list", pythonpath=str(installed))}
     assert sensors["adxl355-example"]["distribution"] == "sdt-adxl355"

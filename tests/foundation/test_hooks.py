@@ -165,7 +165,7 @@ def test_hook_register_stages():
             stages=[{"name": "times", "params": {"gain": 3}}],
         )
     )
-    from sdt_framework.chain import degrade
+    from sdt_framework.api import degrade
 
     y, _ = degrade(np.ones(100), 100.0, sensor)
     assert np.array_equal(y, np.full(100, 3.0))

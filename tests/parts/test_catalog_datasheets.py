@@ -14,6 +14,7 @@ import pytest
 
 from sdt_framework.parts import PartSpec, all_modes, resolve, split_name
 
+pytestmark = pytest.mark.catalog
 sdt_sensors_catalog = pytest.importorskip(
     "sdt_sensors_catalog", reason="install plugins/sensors-catalog (make does)"
 )

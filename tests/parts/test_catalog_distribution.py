@@ -23,6 +23,7 @@ from sdt_framework import build_registry, discovery
 from sdt_framework.cli.main import app
 from sdt_framework.errors import UnknownNameError
 
+pytestmark = pytest.mark.catalog
 sdt_sensors_catalog = pytest.importorskip(
     "sdt_sensors_catalog", reason="install plugins/sensors-catalog (make does)"
 )

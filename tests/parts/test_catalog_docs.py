@@ -10,6 +10,7 @@ import pytest
 from sdt_framework.cli.sensor_views import part_json
 from sdt_framework.parts import resolve
 
+pytestmark = pytest.mark.catalog
 catalogue = pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog")
 DOC = Path(__file__).resolve().parents[2] / "docs" / "sensors.md"
 

@@ -18,6 +18,7 @@ import pytest
 
 from sdt_framework.parts import ErrorTermsError, resolve
 
+pytestmark = pytest.mark.catalog
 catalogue = pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog")
 PARTS = {part.name: part for part in catalogue.load_parts()}
 

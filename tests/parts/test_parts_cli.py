@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 
 from sdt_framework.cli.main import app
 
-pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog (make does)")
+pytestmark = pytest.mark.catalog
 
 
 def listed(*options: str) -> dict[str, dict]:

@@ -8,15 +8,16 @@ import numpy as np
 import pytest
 
 from sdt_framework import SDTError
+from sdt_framework.api import degrade
 from sdt_framework.bench.config import BenchmarkConfig
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
-from sdt_framework.chain import degrade
 from sdt_framework.errors import SpecFileError
 from sdt_framework.parts import ErrorTermsError, all_modes, load_part_text, resolve
 from sdt_framework.stages import draw_unit
 
 from .conftest import TOY
 
+pytestmark = pytest.mark.catalog
 catalogue = pytest.importorskip("sdt_sensors_catalog", reason="install plugins/sensors-catalog")
 PARTS = {part.name: part for part in catalogue.load_parts()}
 

@@ -12,9 +12,8 @@ import numpy as np
 import pytest
 
 from sdt_framework import SDTError, build_registry
-from sdt_framework.api import default_registry
-from sdt_framework.chain import degrade
-from sdt_framework.features import extract
+from sdt_framework.api import degrade, extract
+from sdt_framework.registry import default_registry
 
 
 @pytest.fixture(autouse=True)

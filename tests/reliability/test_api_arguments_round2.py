@@ -15,11 +15,10 @@ import numpy as np
 import pytest
 
 from sdt_framework import build_registry
-from sdt_framework.api import default_registry
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade, extract
 from sdt_framework.errors import ArgumentTypeError, ArgumentValueError, SDTError
 from sdt_framework.explore.ties import evaluate_tie
-from sdt_framework.features import extract
+from sdt_framework.registry import default_registry
 from sdt_framework.sklearn import SensorTwin
 
 
@@ -61,6 +60,7 @@ def test_extract_with_a_label_names_it_in_a_signal_error():
         extract(np.zeros(100), 3200.0, "paper8", label="run-7.npy")
 
 
+@pytest.mark.catalog
 def test_degrade_resolves_a_part_in_a_mode_as_the_cli_does():
     """A 5 g sine through the ADXL355 at +-8 g keeps its peak; the default +-2 g clips it."""
     fs = 20000.0

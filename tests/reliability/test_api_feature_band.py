@@ -17,8 +17,9 @@ import pytest
 from pydantic import ValidationError
 
 from sdt_framework import FeatureSetSpec, SDTError, build_registry
+from sdt_framework.api import extract
 from sdt_framework.cli.main import main
-from sdt_framework.features import compose, extract
+from sdt_framework.features import compose
 
 
 @pytest.fixture(scope="module")

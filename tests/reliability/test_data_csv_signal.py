@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade
 from sdt_framework.data import open_manifest
 from sdt_framework.registry import build_registry
 
@@ -46,7 +46,7 @@ def test_time_acc_csv_is_one_acquisition_in_degrade(
 
 def test_same_rule_in_manifest_and_degrade(tmp_path: Path, acc: np.ndarray) -> None:
     """A headerless (samples, 2) file: a leading regular time axis is found by value."""
-    from sdt_framework.chain.files import load_signal
+    from sdt_framework.cli.signal_io import load_signal
 
     src = tmp_path / "s.csv"
     np.savetxt(src, np.c_[np.arange(acc.size) / FS, acc], delimiter=",", fmt="%.17g")

@@ -18,7 +18,7 @@ import pytest
 
 from sdt_framework.explore.design import design_points
 from sdt_framework.explore.size import design_size
-from sdt_framework.explore.sweep import parse_sweep
+from sdt_framework.explore.sweep_file import parse_sweep
 
 GRID = """
 [sweep]

@@ -67,7 +67,7 @@ def test_every_skipped_point_is_written_with_its_reason(sdt_main, tmp_path):
 
 def test_non_finite_levels_are_refused_before_any_design(registry):
     from sdt_framework.errors import SpecFileError
-    from sdt_framework.explore.sweep import parse_sweep
+    from sdt_framework.explore.sweep_file import parse_sweep
 
     for level in (float("nan"), float("inf")):
         with pytest.raises(

@@ -102,7 +102,7 @@ def test_bad_plot_path_is_refused_before_the_computation(
     sdt_main, monkeypatch, capsys, tmp_path: Path, signal: Path, plot: str, expected: str
 ) -> None:
     calls: list[object] = []
-    monkeypatch.setattr("sdt_framework.chain.noise_check", lambda *a, **k: calls.append(a))
+    monkeypatch.setattr("sdt_framework.validation.noise_check", lambda *a, **k: calls.append(a))
     path = plot.format(tmp=tmp_path)
     code, _, err = sdt_main("validate-noise", "--sensor", "adxl345", "--plot", path)
     assert one_line_error(code, err) and f"--plot {path}" in err and expected in err
@@ -171,7 +171,7 @@ def test_disk_full_while_writing_leaves_nothing(
     sdt_main, monkeypatch, capsys, tmp_path: Path, signal
 ):
     """ENOSPC in the middle of the write: one line, no output, no temporary file left."""
-    import sdt_framework.chain.files as files
+    import sdt_framework.cli.signal_io as files
 
     def full(*args, **kwargs):
         raise OSError(errno.ENOSPC, "No space left on device", str(args[0].name))

@@ -15,10 +15,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sdt_framework.chain import noise_check
 from sdt_framework.data import open_synthetic, write_nln_emp
 from sdt_framework.data.synth import FS_HZ, generate_run
 from sdt_framework.registry import build_registry
+from sdt_framework.validation import noise_check
 
 
 @pytest.mark.parametrize("yes", [[], ["--yes"]])
@@ -97,7 +97,7 @@ def test_synth_memory_estimate_bounds_the_measured_peak() -> None:
 
 @pytest.mark.parametrize("sensor", ["adxl345", "adxl357", "wilcoxon-786b10"])
 def test_noise_memory_estimate_bounds_the_measured_peak(sensor: str) -> None:
-    from sdt_framework.chain.noise_check import zero_motion_cost
+    from sdt_framework.validation.noise_check import zero_motion_cost
 
     spec = build_registry().sensor(sensor)
     n_in, estimate, _ = zero_motion_cost(spec, 20000.0, 32, 2048)

@@ -6,7 +6,6 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from sdt_framework.chain import noise_check
 from sdt_framework.report.figures_features import lowest_severity, plot_tsne
 from sdt_framework.report.figures_scores import (
     best_class_f1,
@@ -17,6 +16,7 @@ from sdt_framework.report.figures_scores import (
 from sdt_framework.report.figures_signal import plot_noise, plot_sdt_overlay
 from sdt_framework.report.signals import SensorTrace
 from sdt_framework.report.style import REFERENCE_COLOR, save_figure, sensor_colors
+from sdt_framework.validation import noise_check
 
 from .conftest import assert_real_png
 

@@ -12,8 +12,8 @@ from sklearn.pipeline import make_pipeline
 from sklearn.preprocessing import StandardScaler
 
 from sdt_framework import SDTError, UnknownNameError
-from sdt_framework.chain import degrade
-from sdt_framework.features import cut_windows, extract
+from sdt_framework.api import degrade, extract
+from sdt_framework.features import cut_windows
 from sdt_framework.sklearn import FeatureExtractor, SensorTwin, row_noise_ids, window_rows
 
 FS = 20000.0

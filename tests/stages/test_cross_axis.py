@@ -7,13 +7,14 @@ import pytest
 from sdt_plugins.sensors.adxl345 import ADXL345
 
 from sdt_framework import SDTError, build_registry
+from sdt_framework.api import degrade, extract
 from sdt_framework.bench.config import BenchmarkConfig
-from sdt_framework.bench.featurize import noise_seed
+from sdt_framework.bench.featurise import noise_seed
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
-from sdt_framework.chain import ChainInputError, compile_chain, degrade, noise_check
+from sdt_framework.chain import ChainInputError, compile_chain
 from sdt_framework.chain.shared import SharedPrefix
-from sdt_framework.features import extract
 from sdt_framework.stages import StageSpec
+from sdt_framework.validation import noise_check
 
 FS = 20000.0
 PLAIN = ADXL345.model_copy(update={"name": "plain", "stages": ()})

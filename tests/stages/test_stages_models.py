@@ -7,9 +7,9 @@ import pytest
 from sdt_plugins.stages import clock, errors, noise
 
 from sdt_framework.chain import RunContext
-from sdt_framework.chain.allan import gauss_markov_adev
-from sdt_framework.chain.allan import mean_oadev as adev
 from sdt_framework.stages import StageContext
+from sdt_framework.validation.allan import gauss_markov_adev
+from sdt_framework.validation.allan import mean_oadev as adev
 
 ROWS = tuple(range(4))
 

@@ -14,9 +14,10 @@ from sdt_plugins.sensors.adxl357 import ADXL357
 from sdt_plugins.sensors.wilcoxon_786b10 import WILCOXON_786B10
 
 from sdt_framework import SDTError, SensorSpec, UnknownNameError, build_registry, hookimpl
+from sdt_framework.api import degrade
 from sdt_framework.bench.config import BenchmarkConfig
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
-from sdt_framework.chain import compile_chain, degrade
+from sdt_framework.chain import compile_chain
 from sdt_framework.chain.shared import SharedPrefix
 from sdt_framework.stages import StageSpec
 

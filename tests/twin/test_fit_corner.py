@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade
 from sdt_framework.twin import Pair, Signal, check_twin, fit_twin
 
 FS_REF = 20_000.0

@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade
 from sdt_framework.twin import Pair, Signal, check_twin, fit_twin
 from sdt_framework.twin.align import at_rate
 from sdt_framework.twin.check import MARGIN_DB

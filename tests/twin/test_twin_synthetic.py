@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from sdt_framework.chain import degrade
+from sdt_framework.api import degrade
 from sdt_framework.twin import Pair, Signal, check_twin, fit_twin
 from sdt_framework.twin.align import at_rate
 

@@ -27,10 +27,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import signal, stats
 
+from ..chain import compile_chain, degrade
+from ..chain.checks import ChainInputError, check_signal
 from ..specs import SensorSpec
 from ..stages import uses_node
-from .chain import compile_chain, degrade
-from .errors import ChainInputError, check_signal
 
 __all__ = [
     "NoiseCheck",

@@ -8,12 +8,13 @@ import numpy as np
 import pytest
 from sdt_plugins.stages import noise
 
-from sdt_framework.chain import RunContext, noise_check
-from sdt_framework.chain.allan import allan_curve, gauss_markov_adev
-from sdt_framework.chain.allan_check import allan_check, configured_terms
+from sdt_framework.chain import RunContext
 from sdt_framework.specs import SensorSpec
-from sdt_framework.stage_use import StageUse
+from sdt_framework.specs.stage_use import StageUse
 from sdt_framework.stages import StageContext
+from sdt_framework.validation import noise_check
+from sdt_framework.validation.allan import allan_curve, gauss_markov_adev
+from sdt_framework.validation.allan_check import allan_check, configured_terms
 
 G0 = 9.80665
 

@@ -1,8 +1,9 @@
 """A profile's extra chain stages and per-unit tolerances, as data.
 
-These models sit below :mod:`sdt_framework.specs` so a
-:class:`~sdt_framework.specs.SensorSpec` can list them; the stage specs they
-name live in :mod:`sdt_framework.stages`.
+They are part of the sensor profile's data model, so they live with the
+specs and a :class:`~sdt_framework.specs.SensorSpec` lists them; the stage
+specs they name live in :mod:`sdt_framework.stages`, one layer up, which
+binds them (``StageUse.spec``).
 """
 
 from __future__ import annotations

@@ -5,9 +5,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sdt_framework.chain import ChainInputError, NoiseCheck, WindowStats, noise_check, window_stats
-from sdt_framework.chain.noise_check import zero_motion_length
+from sdt_framework.chain import ChainInputError
 from sdt_framework.specs import SensorSpec
+from sdt_framework.validation import NoiseCheck, WindowStats, noise_check, window_stats
+from sdt_framework.validation.noise_check import zero_motion_length
 
 
 def test_adxl345_reproduces_table_2_within_1_and_2_percent(adxl345: SensorSpec) -> None:

@@ -1,4 +1,4 @@
-"""Parse and validate NLN-EMP CSV files (header ``time,0,1,...``) with pyarrow.
+"""The NLN-EMP CSV reader: parse and validate files with header ``time,0,1,...`` (pyarrow).
 
 The fast path is pyarrow's multi-threaded CSV reader with every column typed
 float64. pyarrow's errors do not say which row failed, so on failure the file
@@ -17,7 +17,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.csv as pacsv
 
-from .csv_scan import locate_problem
+from .csv_bad_line import locate_problem
 from .recording import DataFileError
 from .tokens import quote
 

@@ -40,7 +40,7 @@ from ..specs import FeatureSetSpec, SensorSpec
 from ..stages import draw_unit, has_tolerances, is_random, uses_node
 from .feature_cache import CachedBlock, ChecksumMismatchError, read_entry, write_entry
 
-__all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurize_recording", "noise_seed"]
+__all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurise_recording", "noise_seed"]
 
 CACHE_VERSION = "2"  # 2: entries carry full-scale counts and a checksum
 
@@ -191,7 +191,7 @@ def _by_prefix(job: FeatureJob) -> list[list[tuple[SensorSpec, int]]]:
     return list(groups.values())
 
 
-def featurize_recording(job: FeatureJob) -> RecordingFeatures:
+def featurise_recording(job: FeatureJob) -> RecordingFeatures:
     """Features of one recording for every (sensor, unit, repetition) of the job."""
     shared: SharedPrefix | None = None  # the recording, read on first need
     out = RecordingFeatures()

@@ -1,0 +1,206 @@
+"""Layers only point down: every import inside sdt_framework follows a declared edge.
+
+Each package or top-level module of ``sdt_framework`` (a "unit") lists the
+units it may import. The table is acyclic, so it is a stack of layers; any
+import not in it fails here, whether at the top of a module, inside a function
+(a lazy import) or under ``TYPE_CHECKING``. A new unit must be added to the
+table, which forces the decision where it sits. A second test finds import
+circles between modules, lazy imports included.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+from pathlib import Path
+
+import sdt_framework
+
+ROOT = Path(sdt_framework.__file__).parent
+
+_BASE = {"errors", "dtypes", "seeding", "hookspecs"}
+_IO = {"errors", "inputs", "io"}
+
+#: unit -> the units it may import (besides itself)
+ALLOWED: dict[str, set[str]] = {
+    "errors": set(),
+    "dtypes": set(),
+    "seeding": set(),
+    "hookspecs": set(),
+    "inputs": {"errors"},
+    "io": {"errors"},
+    "toml_files": {"errors", "inputs"},
+    "specs": {"errors"},
+    "arguments": {"dtypes", "errors", "specs"},
+    "discovery": {"errors", "hookspecs"},
+    "stages": {"errors", "seeding", "specs"},
+    "parts": {"errors", "specs", "toml_files"},
+    "sensor_files": {"errors", "specs", "toml_files"},
+    "registry_lookup": {"discovery", "errors", "parts", "specs", "stages"},
+    "registry": {
+        "discovery",
+        "errors",
+        "hookspecs",
+        "parts",
+        "registry_lookup",
+        "sensor_files",
+        "specs",
+        "stages",
+    },
+    "data": _BASE | _IO,
+    "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
+    "features": {"arguments", "errors", "io", "specs"},
+    "edge": {"errors", "specs"},
+    "validation": _IO | {"chain", "specs", "stages"},
+    "api": {"arguments", "chain", "errors", "features", "registry", "specs"},
+    "conformance": {"chain", "errors", "features", "parts", "registry", "specs", "stages"},
+    "sklearn": {"api", "arguments", "chain", "errors", "features", "specs"},
+    "twin": _IO | {"chain", "data", "specs", "toml_files"},
+    "bench": _BASE
+    | _IO
+    | {"chain", "data", "features", "parts", "registry", "specs", "stages", "toml_files"},
+    "verdict": {"bench", "errors", "seeding"},
+    "explore": _BASE
+    | _IO
+    | {"bench", "data", "registry", "sensor_files", "specs", "stages", "toml_files"},
+    "report": _IO
+    | {
+        "bench",
+        "chain",
+        "data",
+        "edge",
+        "explore",
+        "features",
+        "registry",
+        "specs",
+        "validation",
+        "verdict",
+    },
+    "cli": _IO
+    | {
+        "bench",
+        "chain",
+        "data",
+        "edge",
+        "explore",
+        "features",
+        "parts",
+        "registry",
+        "report",
+        "specs",
+        "twin",
+        "validation",
+        "verdict",
+    },
+    "__init__": {"errors", "hookspecs", "registry", "specs"},
+    "__main__": {"cli"},
+}
+
+
+def _module_name(path: Path) -> tuple[str, ...]:
+    parts = path.relative_to(ROOT).with_suffix("").parts
+    return parts[:-1] if parts[-1] == "__init__" else parts
+
+
+def _imports(path: Path) -> Iterator[tuple[tuple[str, ...], int]]:
+    """(imported module under sdt_framework, line) of every import in ``path``, lazy ones too."""
+    package = list(path.relative_to(ROOT).parts[:-1])
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[: len(package) - node.level + 1]
+            elif (node.module or "").split(".")[0] == "sdt_framework":
+                base = []
+            else:
+                continue
+            module = (node.module or "").split(".")
+            if node.level == 0:
+                module = module[1:]
+            target = tuple(base + [m for m in module if m])
+            for alias in node.names:  # `from . import x` may name a module
+                sub = (*target, alias.name)
+                known = (ROOT.joinpath(*sub).with_suffix(".py").exists()) or (
+                    ROOT.joinpath(*sub).is_dir()
+                )
+                yield (sub if known else target), node.lineno
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                pieces = alias.name.split(".")
+                if pieces[0] == "sdt_framework":
+                    yield tuple(pieces[1:]), node.lineno
+
+
+def _unit(module: tuple[str, ...]) -> str:
+    return module[0] if module else "__init__"
+
+
+def _sources() -> list[Path]:
+    return sorted(ROOT.rglob("*.py"))
+
+
+def test_the_table_is_a_stack_of_layers():
+    """No unit may reach itself through the table: every declared edge points down."""
+    done: set[str] = set()
+
+    def visit(unit: str, path: tuple[str, ...]) -> None:
+        assert unit not in path, f"declared circle: {' -> '.join((*path, unit))}"
+        if unit in done:
+            return
+        for below in ALLOWED[unit]:
+            visit(below, (*path, unit))
+        done.add(unit)
+
+    for unit in ALLOWED:
+        visit(unit, ())
+
+
+def test_every_unit_of_the_package_has_a_place_in_the_table():
+    units = {_unit(_module_name(path)) for path in _sources()}
+    assert units - set(ALLOWED) == set(), "add the new unit to ALLOWED"
+    assert set(ALLOWED) - units == set(), "remove the unit that went from ALLOWED"
+
+
+def test_every_import_follows_a_declared_edge():
+    wrong = []
+    for path in _sources():
+        unit = _unit(_module_name(path))
+        for module, line in _imports(path):
+            target = _unit(module)
+            if target != unit and target not in ALLOWED[unit]:
+                where = f"{path.relative_to(ROOT)}:{line}"
+                wrong.append(f"{where}: {unit} imports {'.'.join(module) or 'sdt_framework'}")
+    assert wrong == [], "\n".join(wrong)
+
+
+def test_no_import_circle_between_modules():
+    """Module to module, lazy imports included (a lazy import hides a circle, it does not end it).
+
+    Importing a package counts as importing its ``__init__``; a package's
+    ``__init__`` importing its own modules is the package, not a circle.
+    """
+    graph: dict[tuple[str, ...], set[tuple[str, ...]]] = {}
+    for path in _sources():
+        name = _module_name(path)
+        graph[name] = {m for m, _ in _imports(path) if m != name}
+    for name, targets in graph.items():
+        if ROOT.joinpath(*name).is_dir():  # a package's __init__
+            graph[name] = {t for t in targets if t[: len(name)] != name}
+    state: dict[tuple[str, ...], int] = {}
+    circles = []
+
+    def visit(node: tuple[str, ...], stack: list[tuple[str, ...]]) -> None:
+        state[node] = 1
+        for target in sorted(graph.get(node, ())):
+            if target not in graph:
+                continue
+            if state.get(target) == 1:
+                cycle = [*stack[stack.index(target) :], target]
+                circles.append(" -> ".join(".".join(m) or "sdt_framework" for m in cycle))
+            elif target not in state:
+                visit(target, [*stack, target])
+        state[node] = 2
+
+    for node in sorted(graph):
+        if node not in state:
+            visit(node, [node])
+    assert circles == [], "\n".join(circles)
