@@ -23,11 +23,13 @@ import numpy as np
 from scipy import signal
 
 from ..seeding import rng
+from . import synth_faults as f
 from . import synth_model as m
 
 __all__ = ["FS_HZ", "generate_run"]
 
 FS_HZ = 20000.0
+GROUPS = ("motor_radial", "motor_axial", "pump_radial", "pump_axial")
 
 
 def _clipped_normal(gen: np.random.Generator, sd: float, limit: float, size: int | None = None):
@@ -54,7 +56,7 @@ def _resonator(freq: float, zeta: float, fs: float) -> tuple[np.ndarray, np.ndar
 
 @cache
 def _cavitation_band(fs: float) -> np.ndarray:
-    return signal.butter(4, m.CAVITATION_BAND_HZ, btype="bandpass", fs=fs, output="sos")
+    return signal.butter(4, f.CAVITATION_BAND_HZ, btype="bandpass", fs=fs, output="sos")
 
 
 def _impulses(n: int, fs: float, times: np.ndarray, amplitudes: np.ndarray) -> np.ndarray:
@@ -75,8 +77,8 @@ def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatte
     """
     parts: tuple[dict, dict] = ({}, {})
     table = [(0, g, k, a, "base") for g, k, a in m.BASELINE]
-    step = m.SEVERITY_STEPS.get(condition, range(1, level + 1))[level - 1]
-    table += [(1, g, k, a * step, condition) for g, k, a in m.FAULT_HARMONICS.get(condition, ())]
+    step = f.SEVERITY_STEPS.get(condition, range(1, level + 1))[level - 1]
+    table += [(1, g, k, a * step, condition) for g, k, a in f.FAULT_HARMONICS.get(condition, ())]
     for part, group, order, amp, tag in table:
         phase = rng(seed, machine.name, "phase", group, order, tag).uniform(0, 2 * np.pi)
         key = (group, float(order))
@@ -109,39 +111,44 @@ def _sources(
             gain = drift[0] if part == 0 else 1.0
             lowfreq[part][group] = lowfreq[part].get(group, 0) + gain * amp * rotation[order]
     impacts = {"motor_bearing": np.zeros(n), "pump_bearing": np.zeros(n), "coupling": np.zeros(n)}
-    if condition in m.BEARING_FAULTS:
-        where, bearing, race, amp = m.BEARING_FAULTS[condition]
-        rate = f1 * (bearing.bpfo if race == "outer" else bearing.bpfi)
+    if condition in f.BEARING_FAULTS:
+        where, bearing, race, amp = f.BEARING_FAULTS[condition]
+        size = f.IMPACT_STEPS.get(condition, range(1, level + 1))[level - 1]
+        if bearing is None:  # coupling: impacts at a fixed number per revolution
+            rate, slip, scatter_sd = f1 * float(race), 0.0, f.COUPLING_SCATTER
+        else:
+            rate = f1 * (bearing.bpfo if race == "outer" else bearing.bpfi)
+            slip, scatter_sd = f.BEARING_SLIP, 0.0
         count = int(n / fs * rate) + 2
-        steps = (1 + _clipped_normal(gen, m.BEARING_SLIP, 3, count)) / rate
+        steps = (1 + _clipped_normal(gen, slip, 3, count)) / rate
         times = gen.uniform(0, 1 / rate) + np.cumsum(steps) - steps[0]
-        amps = np.full(count, amp * level * scatter["impacts"])
+        amps = amp * size * scatter["impacts"] * (1 + _clipped_normal(gen, scatter_sd, 3, count))
         if race == "inner":  # the defect passes through the load zone once per revolution
             amps *= 0.3 + 0.7 * (1 + np.cos(2 * np.pi * f1 * times + theta)) / 2
         impacts[where] = _impulses(n, fs, times, amps)
-    if condition == "coupling":
-        times = (np.arange(int(2 * f1 * n / fs) + 2) + gen.uniform(0, 1)) / (2 * f1)
-        amps = (
-            m.COUPLING_IMPACT_G
-            * level
-            * scatter["impacts"]
-            * (1 + _clipped_normal(gen, 0.2, 3, times.size))
-        )
-        impacts["coupling"] = _impulses(n, fs, times, amps)
     cavitation = np.zeros(n)
-    if condition in m.CAVITATION:
-        amplitudes, rates = m.CAVITATION[condition]
+    if condition in f.CAVITATION:
+        amplitudes, rates = f.CAVITATION[condition]
         amp = amplitudes[level - 1] * scatter["cavitation"]
         vpf = m.VANES * f1
         # bursts collapse as a vane passes the low-pressure zone: a random subset of vane passes
         passes = (np.arange(int(vpf * n / fs) + 1) + gen.uniform(0, 1)) / vpf
         chosen = passes[gen.random(passes.size) < rates[level - 1] / vpf]
-        burst = np.exp(-np.arange(int(5 * m.CAVITATION_BURST_S * fs)) / (m.CAVITATION_BURST_S * fs))
+        burst = np.exp(-np.arange(int(5 * f.CAVITATION_BURST_S * fs)) / (f.CAVITATION_BURST_S * fs))
         strength = amp * np.exp(_clipped_normal(gen, 0.35, 3, chosen.size))
         envelope = signal.fftconvolve(_impulses(n, fs, chosen, strength), burst)[:n]
-        envelope += m.CAVITATION_HISS * amp * (1 + np.cos(2 * np.pi * vpf * t)) / 2
+        envelope += f.CAVITATION_HISS * amp * (1 + np.cos(2 * np.pi * vpf * t)) / 2
         carrier = signal.sosfilt(_cavitation_band(fs), gen.standard_normal(n))
         cavitation = envelope * carrier / np.std(carrier)
+    if condition in f.DISCHARGE:
+        hiss, surge = f.DISCHARGE[condition]
+        carrier = signal.sosfilt(_cavitation_band(fs), gen.standard_normal(n))
+        cavitation = hiss[level - 1] * scatter["cavitation"] * carrier / np.std(carrier)
+        lo, hi = f.RECIRCULATION_ORDERS
+        sos = signal.butter(2, (lo * f1, hi * f1), btype="bandpass", fs=fs, output="sos")
+        wave = signal.sosfilt(sos, gen.standard_normal(n))
+        wave = signal.hilbert(wave / np.std(wave)) * surge[level - 1] * scatter["pump_radial"]
+        lowfreq[1]["pump_radial"] = lowfreq[1].get("pump_radial", 0) + wave
     flow = drift[1] * gen.standard_normal(n)
     return {"lowfreq": lowfreq, "impacts": impacts, "flow": flow, "cavitation": cavitation}
 
@@ -150,20 +157,21 @@ def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float, insta
     """One sensor's view of the sources: complex gains, resonances, direct cavitation, noise.
 
     ``install`` = (low, broadband): this run's factors on the channel's response
-    to the healthy machine's shaft-synchronous vibration and to flow noise.
+    to the healthy machine's shaft-synchronous vibration, per source group, and
+    to flow noise, per resonance (operating point x mounting).
     """
     out = np.zeros(noise.size, dtype=complex)
     base, fault = src["lowfreq"]
     for group, wave in base.items():
-        out += path.gains[group] * install[0] * wave
+        out += path.gains[group] * install[0][group] * wave
     for group, wave in fault.items():
         out += path.gains[group] * wave
     result = out.real + path.cavitation * src["cavitation"] + noise
     excitation = sum(path.impacts[k] * v for k, v in src["impacts"].items())
-    flow = src["flow"] * (m.FLOW_NOISE_G * install[1])
-    for freq, zeta, weight in path.modes:
+    flow = src["flow"] * m.FLOW_NOISE_G
+    for (freq, zeta, weight), mount in zip(path.modes, install[1], strict=True):
         b, a, gain = _resonator(freq, zeta, fs)
-        result += weight * signal.lfilter(b, a, excitation + flow / gain)
+        result += weight * signal.lfilter(b, a, excitation + mount * flow / gain)
     return result
 
 
@@ -197,15 +205,22 @@ def generate_run(
     n = round(duration_s * fs)
     out = {ch: np.empty((acquisitions, n)) for ch in channels}
     # installation: each healthy run is its own; the levels of a fault class share the
-    # class campaign's, each level with a small residual of its own. Drawn per channel,
-    # so independent of which channels are selected.
+    # class campaign's, each level with a small residual of its own. The operating point
+    # (flow noise) is shared by the channels; the rest is drawn per channel and source
+    # group or resonance, so independent of which channels are selected.
     campaign, residual = (run, 0.0) if condition == "healthy" else (condition, m.LEVEL_SCATTER)
+    point_gen = rng(seed, machine, campaign, "flow point")
+    point = np.exp(_clipped_normal(point_gen, m.FLOW_POINT_SD, 2.5))
     install = {}
     for ch in channels:
         gen, own = rng(seed, machine, campaign, "install", ch), rng(seed, machine, run, "level", ch)
-        install[ch] = tuple(
-            float(np.exp(_clipped_normal(gen, sd, 2.5) + _clipped_normal(own, residual, 2.5)))
-            for sd in (m.CHANNELS[ch].install_sd, m.HF_INSTALL_SD)
+        path = m.CHANNELS[ch]
+        lows = _clipped_normal(gen, path.install_sd, 2.5, len(GROUPS))
+        highs = _clipped_normal(gen, m.HF_MOUNT_SD, 2.5, len(path.modes))
+        own_low, own_high = _clipped_normal(own, residual, 2.5, 2)
+        install[ch] = (
+            dict(zip(GROUPS, np.exp(lows + own_low), strict=True)),
+            tuple(point * np.exp(highs + own_high)),
         )
     for acq in range(acquisitions):
         src = _sources(spec, condition, severity, run, acq, n, seed, fs)
