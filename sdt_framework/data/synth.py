@@ -149,7 +149,8 @@ def _sources(
         wave = signal.sosfilt(sos, gen.standard_normal(n))
         wave = signal.hilbert(wave / np.std(wave)) * surge[level - 1] * scatter["pump_radial"]
         lowfreq[1]["pump_radial"] = lowfreq[1].get("pump_radial", 0) + wave
-    flow = drift[1] * gen.standard_normal(n)
+    trend = np.exp(f.FLOW_TREND.get(condition, 0.0) * (level - 1))  # hydraulic power lost
+    flow = drift[1] * trend * gen.standard_normal(n)
     return {"lowfreq": lowfreq, "impacts": impacts, "flow": flow, "cavitation": cavitation}
 
 

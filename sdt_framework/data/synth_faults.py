@@ -78,7 +78,7 @@ FAULT_HARMONICS: dict[str, tuple[tuple[str, float, float], ...]] = {
         ("pump_radial", 2 * VANES, 0.03),
         ("pump_radial", 1, 0.03),
     ),
-    "bearing pump": (("pump_radial", 1, 0.02),),
+    "bearing pump": (("pump_radial", 1, 0.03), ("pump_radial", 2, 0.015), ("pump_radial", 3, 0.01)),
 }
 # combination: 70 % of parallel plus 70 % of angular (no source)
 FAULT_HARMONICS["align combination"] = tuple(
@@ -92,7 +92,12 @@ FAULT_HARMONICS["align combination"] = tuple(
 #: other (0.034-0.039 g), levels 5 and 6 raise it 1.9 and 2.6 times
 SEVERITY_STEPS: dict[str, tuple[float, ...]] = {
     "unbalance motor": (0.025, 0.05, 0.075, 0.1, 1.6, 2.4),
+    "bearing pump": (3.0, 3.3, 3.6),
 }
+
+#: log change of the flow noise per level: [B]'s Motor-2 ch1 overall RMS falls with impeller
+#: damage (0.429, 0.395, 0.373 g): a damaged impeller delivers less head and flow
+FLOW_TREND: dict[str, float] = {"impeller": -0.07}
 
 #: impacts: class -> (source, bearing or None, race or rate per revolution, g per unit size).
 #: Motor bearing: set by [B]'s growth of ch1 overall RMS with severity. Pump bearing: damage
@@ -107,7 +112,7 @@ BEARING_FAULTS: dict[str, tuple[str, Bearing | None, str | float, float]] = {
 }
 #: impact size per level (default: the level number)
 IMPACT_STEPS: dict[str, tuple[float, ...]] = {
-    "bearing pump": (2.0, 2.2, 2.4),
+    "bearing pump": (3.0, 3.3, 3.6),
     "coupling": (3.0, 4.0, 5.0),
 }
 BEARING_SLIP = 0.01  # relative SD of the interval between bearing impacts
@@ -119,7 +124,7 @@ COUPLING_SCATTER = 0.2  # relative SD of one coupling impact's strength
 #: audible at each of the rig's settings): bursts dominate the kHz band at every level,
 #: so their kurtosis is the class's mark; rate and strength grow as suction pressure falls.
 CAVITATION: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
-    "cavitation suction": ((4.5, 6.0, 7.5, 9.5), (10.0, 13.0, 16.0, 20.0)),
+    "cavitation suction": ((6.0, 7.0, 8.0, 9.5), (12.0, 14.0, 17.0, 20.0)),
 }
 CAVITATION_BURST_S = 0.006  # decay time constant of one cavitation burst envelope
 CAVITATION_HISS = 0.1  # continuous cavitation noise, as a fraction of the burst amplitude
@@ -131,7 +136,7 @@ CAVITATION_BAND_HZ = (1000.0, 5000.0)  # low enough to clip the ADXL345, peaks <
 #: residual pump 1x, both growing as the valve closes
 DISCHARGE: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
     "cavitation discharge": (
-        (0.35, 0.45, 0.55, 0.65, 0.75),
+        (0.6, 0.7, 0.8, 0.9, 1.0),
         (0.02, 0.024, 0.028, 0.032, 0.036),
     ),
 }
