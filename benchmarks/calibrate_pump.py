@@ -158,7 +158,7 @@ def main() -> None:
     classifiers = ["lr", "knn", "xgb"] if args.quick else None
     repeats = 1 if args.quick else args.repeats
     start = time.perf_counter()
-    scores, figures = [], []
+    scores, figures, classes = [], [], []
     with tempfile.TemporaryDirectory(prefix="calibrate_pump_") as tmp:
         for seed in range(args.seeds):
             where = Path(tmp)
@@ -166,6 +166,8 @@ def main() -> None:
             mean = results.groupby(["machine", "scenario"])["macro_f1"].mean()
             scores.append(mean.rename(seed))
             figures.append(pd.Series(findings(per_class, confusion), name=seed))
+            f1 = per_class.groupby(["machine", "class", "scenario"])["f1"].mean()
+            classes.append(f1.rename(seed))
     table = pd.concat(scores, axis=1)
     print(
         f"reference chain ({REFERENCE}), Macro F1 mean over "
@@ -201,6 +203,9 @@ def main() -> None:
         print(f"  {'held    ' if rule(found[key]) else 'not held'}  {text}: {found[key]:.2f}")
     for key in found.index.difference([k for k, _ in CHECKS.values()]):
         print(f"  (figure)  {key}: {found[key]:.2f}")
+    per_class_f1 = pd.concat(classes, axis=1).median(axis=1).unstack("scenario")[list(SCENARIOS)]
+    print("per-class F1 (mean over classifiers, median over seeds):")
+    print(per_class_f1.round(2).to_string())
     print(f"{time.perf_counter() - start:.0f} s")
 
 

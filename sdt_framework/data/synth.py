@@ -29,7 +29,6 @@ from . import synth_model as m
 __all__ = ["FS_HZ", "generate_run"]
 
 FS_HZ = 20000.0
-GROUPS = ("motor_radial", "motor_axial", "pump_radial", "pump_axial")
 
 
 def _clipped_normal(gen: np.random.Generator, sd: float, limit: float, size: int | None = None):
@@ -55,8 +54,8 @@ def _resonator(freq: float, zeta: float, fs: float) -> tuple[np.ndarray, np.ndar
 
 
 @cache
-def _cavitation_band(fs: float) -> np.ndarray:
-    return signal.butter(4, f.CAVITATION_BAND_HZ, btype="bandpass", fs=fs, output="sos")
+def _band(band: tuple[float, float], fs: float) -> np.ndarray:
+    return signal.butter(4, band, btype="bandpass", fs=fs, output="sos")
 
 
 def _impulses(n: int, fs: float, times: np.ndarray, amplitudes: np.ndarray) -> np.ndarray:
@@ -76,7 +75,10 @@ def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatte
     fixed per machine and component (the added unbalance mass always at the same angle).
     """
     parts: tuple[dict, dict] = ({}, {})
-    table = [(0, g, k, a, "base") for g, k, a in m.BASELINE]
+    hydraulic = scatter["hydraulic"]  # vane-pass pulsation follows the operating point
+    table = [
+        (0, g, k, a * (hydraulic if k % m.VANES == 0 else 1.0), "base") for g, k, a in m.BASELINE
+    ]
     step = f.SEVERITY_STEPS.get(condition, range(1, level + 1))[level - 1]
     table += [(1, g, k, a * step, condition) for g, k, a in f.FAULT_HARMONICS.get(condition, ())]
     for part, group, order, amp, tag in table:
@@ -88,15 +90,24 @@ def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatte
 
 
 def _sources(
-    machine: m.Machine, condition: str, level: int, run: str, acq: int, n: int, seed: int, fs: float
+    machine: m.Machine,
+    condition: str,
+    level: int,
+    run: str,
+    acq: int,
+    n: int,
+    seed: int,
+    fs: float,
+    point: float,
 ) -> dict:
-    """Everything shared by the channels of one acquisition."""
+    """Everything shared by the channels of one acquisition (``point``: operating point)."""
     run_gen = rng(seed, machine.name, run, "run")
     speed = 1 + _clipped_normal(run_gen, m.SPEED_JITTER, 3)
     groups = ("motor_radial", "motor_axial", "pump_radial", "pump_axial", "impacts", "cavitation")
     scatter = dict(
         zip(groups, np.exp(_clipped_normal(run_gen, m.AMPLITUDE_SCATTER, 2, 6)), strict=True)
     )
+    scatter["hydraulic"] = point**m.VANE_PASS_EXPONENT
     gen = rng(seed, machine.name, run, "acquisition", acq)
     f1 = machine.shaft_hz * speed * (1 + _clipped_normal(gen, 5e-4, 3))
     theta = gen.uniform(0, 2 * np.pi)  # shaft angle at the first sample
@@ -138,18 +149,18 @@ def _sources(
         strength = amp * np.exp(_clipped_normal(gen, 0.35, 3, chosen.size))
         envelope = signal.fftconvolve(_impulses(n, fs, chosen, strength), burst)[:n]
         envelope += f.CAVITATION_HISS * amp * (1 + np.cos(2 * np.pi * vpf * t)) / 2
-        carrier = signal.sosfilt(_cavitation_band(fs), gen.standard_normal(n))
+        carrier = signal.sosfilt(_band(f.CAVITATION_BAND_HZ, fs), gen.standard_normal(n))
         cavitation = envelope * carrier / np.std(carrier)
     if condition in f.DISCHARGE:
         hiss, surge = f.DISCHARGE[condition]
-        carrier = signal.sosfilt(_cavitation_band(fs), gen.standard_normal(n))
+        carrier = signal.sosfilt(_band(f.DISCHARGE_BAND_HZ, fs), gen.standard_normal(n))
         cavitation = hiss[level - 1] * scatter["cavitation"] * carrier / np.std(carrier)
         lo, hi = f.RECIRCULATION_ORDERS
         sos = signal.butter(2, (lo * f1, hi * f1), btype="bandpass", fs=fs, output="sos")
         wave = signal.sosfilt(sos, gen.standard_normal(n))
         wave = signal.hilbert(wave / np.std(wave)) * surge[level - 1] * scatter["pump_radial"]
         lowfreq[1]["pump_radial"] = lowfreq[1].get("pump_radial", 0) + wave
-    trend = np.exp(f.FLOW_TREND.get(condition, 0.0) * (level - 1))  # hydraulic power lost
+    trend = np.exp(f.FLOW_TREND.get(condition, 0.0) * level)  # hydraulic power lost
     flow = drift[1] * trend * gen.standard_normal(n)
     return {"lowfreq": lowfreq, "impacts": impacts, "flow": flow, "cavitation": cavitation}
 
@@ -158,13 +169,13 @@ def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float, insta
     """One sensor's view of the sources: complex gains, resonances, direct cavitation, noise.
 
     ``install`` = (low, broadband): this run's factors on the channel's response
-    to the healthy machine's shaft-synchronous vibration, per source group, and
-    to flow noise, per resonance (operating point x mounting).
+    to the healthy machine's shaft-synchronous vibration, and to flow noise, per
+    resonance (operating point x mounting).
     """
     out = np.zeros(noise.size, dtype=complex)
     base, fault = src["lowfreq"]
     for group, wave in base.items():
-        out += path.gains[group] * install[0][group] * wave
+        out += path.gains[group] * install[0] * wave
     for group, wave in fault.items():
         out += path.gains[group] * wave
     result = out.real + path.cavitation * src["cavitation"] + noise
@@ -207,24 +218,24 @@ def generate_run(
     out = {ch: np.empty((acquisitions, n)) for ch in channels}
     # installation: each healthy run is its own; the levels of a fault class share the
     # class campaign's, each level with a small residual of its own. The operating point
-    # (flow noise) is shared by the channels; the rest is drawn per channel and source
-    # group or resonance, so independent of which channels are selected.
-    campaign, residual = (run, 0.0) if condition == "healthy" else (condition, m.LEVEL_SCATTER)
-    point_gen = rng(seed, machine, campaign, "flow point")
+    # (flow noise) is shared by the channels, and by the classes of one session; the
+    # mounting is drawn per channel and source group or resonance, so independent of
+    # which channels are selected.
+    campaign, own_sd = (run, (0.0, 0.0)) if condition == "healthy" else (condition, m.LEVEL_SCATTER)
+    point_gen = rng(seed, machine, f.SESSIONS.get(campaign, campaign), "flow point")
     point = np.exp(_clipped_normal(point_gen, m.FLOW_POINT_SD, 2.5))
     install = {}
     for ch in channels:
         gen, own = rng(seed, machine, campaign, "install", ch), rng(seed, machine, run, "level", ch)
         path = m.CHANNELS[ch]
-        lows = _clipped_normal(gen, path.install_sd, 2.5, len(GROUPS))
+        low = _clipped_normal(gen, path.install_sd, 2.5) + _clipped_normal(own, own_sd[0], 2.5)
         highs = _clipped_normal(gen, m.HF_MOUNT_SD, 2.5, len(path.modes))
-        own_low, own_high = _clipped_normal(own, residual, 2.5, 2)
         install[ch] = (
-            dict(zip(GROUPS, np.exp(lows + own_low), strict=True)),
-            tuple(point * np.exp(highs + own_high)),
+            float(np.exp(low)),
+            tuple(point * np.exp(highs + _clipped_normal(own, own_sd[1], 2.5))),
         )
     for acq in range(acquisitions):
-        src = _sources(spec, condition, severity, run, acq, n, seed, fs)
+        src = _sources(spec, condition, severity, run, acq, n, seed, fs, point)
         for ch in channels:
             noise = rng(seed, machine, run, "noise", acq, ch).normal(0, m.SENSOR_NOISE_G, n)
             out[ch][acq] = _channel(src, m.CHANNELS[ch], noise, fs, install[ch])
