@@ -125,7 +125,7 @@ COUPLING_SCATTER = 0.2  # relative SD of one coupling impact's strength
 #: audible at each of the rig's settings): bursts dominate the kHz band at every level,
 #: so their kurtosis is the class's mark; rate and strength grow as suction pressure falls.
 CAVITATION: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
-    "cavitation suction": ((6.0, 7.0, 8.0, 9.5), (12.0, 14.0, 17.0, 20.0)),
+    "cavitation suction": ((7.5, 8.0, 8.5, 9.5), (14.0, 16.0, 18.0, 20.0)),
 }
 CAVITATION_BURST_S = 0.006  # decay time constant of one cavitation burst envelope
 CAVITATION_HISS = 0.1  # continuous cavitation noise, as a fraction of the burst amplitude
@@ -137,8 +137,8 @@ CAVITATION_BAND_HZ = (1000.0, 5000.0)  # low enough to clip the ADXL345, peaks <
 #: residual pump 1x, both growing as the valve closes
 DISCHARGE: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
     "cavitation discharge": (
-        (0.6, 0.7, 0.8, 0.9, 1.0),
-        (0.06, 0.07, 0.08, 0.09, 0.1),
+        (0.7, 0.75, 0.8, 0.85, 0.9),
+        (0.08, 0.085, 0.09, 0.095, 0.1),
     ),
 }
 #: the throttled valve's broadband noise: from a few hundred Hz (turbulence at the valve)
