@@ -218,15 +218,18 @@ def generate_run(
     out = {ch: np.empty((acquisitions, n)) for ch in channels}
     # installation: each healthy run is its own; the levels of a fault class share the
     # class campaign's, each level with a small residual of its own. The operating point
-    # (flow noise) is shared by the channels, and by the classes of one session; the
-    # mounting is drawn per channel and source group or resonance, so independent of
-    # which channels are selected.
+    # (flow noise) is shared by the channels, and by the classes of one session, as is
+    # the mounting where the session leaves it in place; the mounting is drawn per
+    # channel and resonance, so independent of which channels are selected.
     campaign, own_sd = (run, (0.0, 0.0)) if condition == "healthy" else (condition, m.LEVEL_SCATTER)
-    point_gen = rng(seed, machine, f.SESSIONS.get(campaign, campaign), "flow point")
+    session = f.SESSIONS.get(campaign, campaign)
+    point_gen = rng(seed, machine, session, "flow point")
     point = np.exp(_clipped_normal(point_gen, m.FLOW_POINT_SD, 2.5))
     install = {}
     for ch in channels:
-        gen, own = rng(seed, machine, campaign, "install", ch), rng(seed, machine, run, "level", ch)
+        mounting = session if session in f.MOUNTING_KEPT else campaign
+        gen = rng(seed, machine, mounting, "install", ch)
+        own = rng(seed, machine, run, "level", ch)
         path = m.CHANNELS[ch]
         low = _clipped_normal(gen, path.install_sd, 2.5) + _clipped_normal(own, own_sd[0], 2.5)
         highs = _clipped_normal(gen, m.HF_MOUNT_SD, 2.5, len(path.modes))
