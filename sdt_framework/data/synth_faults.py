@@ -78,7 +78,7 @@ FAULT_HARMONICS: dict[str, tuple[tuple[str, float, float], ...]] = {
         ("pump_radial", 2 * VANES, 0.03),
         ("pump_radial", 1, 0.03),
     ),
-    "bearing pump": (("pump_radial", 1, 0.03), ("pump_radial", 2, 0.015), ("pump_radial", 3, 0.01)),
+    "bearing pump": (("pump_radial", 1, 0.015), ("pump_radial", 2, 0.008), ("pump_radial", 3, 0.005)),
 }
 # combination: 70 % of parallel plus 70 % of angular (no source)
 FAULT_HARMONICS["align combination"] = tuple(
@@ -137,8 +137,8 @@ CAVITATION_BAND_HZ = (1000.0, 5000.0)  # low enough to clip the ADXL345, peaks <
 #: residual pump 1x, both growing as the valve closes
 DISCHARGE: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
     "cavitation discharge": (
-        (0.7, 0.75, 0.8, 0.85, 0.9),
-        (0.08, 0.085, 0.09, 0.095, 0.1),
+        (1.0, 1.05, 1.1, 1.15, 1.2),
+        (0.03, 0.032, 0.034, 0.036, 0.038),
     ),
 }
 #: the throttled valve's broadband noise: from a few hundred Hz (turbulence at the valve)
