@@ -4,11 +4,14 @@ One run (a condition directory) is generated at once for all its channels:
 the rig's sources (shaft harmonics, vane pass, impacts, flow noise,
 cavitation) are drawn once per acquisition and every channel sees them through
 its own transfer path (``synth_model.CHANNELS``), so channels are simultaneous
-views of the same event. Each run is also an installation: its channels'
-response to the healthy machine and to flow noise is scaled by factors drawn
-per healthy run, or per fault class (shared by its levels), calibrated to the
-real archive's spread (docs/data.md). All draws come from ``seeding.rng(seed,
-machine, run or class, ...)``: the same seed gives bit-identical signals
+views of the same event; the fault signatures are ``synth_faults``'. Each run is
+also an installation at an operating point: the flow noise and vane pass scale
+with the operating point, shared by every channel (and by the classes of one
+session, ``synth_faults.SESSIONS``), and each channel's response to the healthy
+machine and to flow noise with its mounting, drawn per healthy run, or per fault
+class (shared by its levels), calibrated to the real archive's spread
+(docs/data.md). All draws come from ``seeding.rng(seed, machine, run, class or
+session, ...)``: the same seed gives bit-identical signals
 whatever the selection or loading order. Generation is vectorised: harmonics
 as complex exponentials, impulse trains by index arithmetic filtered by
 band-pass resonators (``scipy.signal.lfilter``), cavitation as band-passed

@@ -131,10 +131,10 @@ CAVITATION_BURST_S = 0.006  # decay time constant of one cavitation burst envelo
 CAVITATION_HISS = 0.1  # continuous cavitation noise, as a fraction of the burst amplitude
 CAVITATION_BAND_HZ = (1000.0, 5000.0)  # low enough to clip the ADXL345, peaks < 80 g [P]
 
-#: discharge throttling: class -> (continuous kHz hiss RMS g, recirculation force RMS g on
-#: the pump's radial group) per level; no source: the hiss of the order of the flow noise
-#: (the broadband level doubles at the last level), recirculation of the order of the
-#: residual pump 1x, both growing as the valve closes
+#: discharge throttling: class -> (continuous hiss RMS g, recirculation force RMS g on the
+#: pump's radial group) per level; no source: the hiss about doubles the broadband level
+#: from the first level (the valve cavitates at every setting), the recirculation is of
+#: the order of the residual pump 1x (ch5 about 12 mm/s); both grow as the valve closes
 DISCHARGE: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
     "cavitation discharge": (
         (1.0, 1.05, 1.1, 1.15, 1.2),

@@ -1,4 +1,6 @@
-"""Physical constants of the synthetic pump test rig: machines, bearings, paths, faults.
+"""Physical constants of the synthetic pump test rig: machines, bearings, paths, scatter.
+
+The fault signatures are in ``synth_faults.py``.
 
 Everything the generator (``synth.py``) assumes is here, with its reason, so
 that the documentation and the tests can compute the expected frequencies
