@@ -78,7 +78,11 @@ FAULT_HARMONICS: dict[str, tuple[tuple[str, float, float], ...]] = {
         ("pump_radial", 2 * VANES, 0.03),
         ("pump_radial", 1, 0.03),
     ),
-    "bearing pump": (("pump_radial", 1, 0.015), ("pump_radial", 2, 0.008), ("pump_radial", 3, 0.005)),
+    "bearing pump": (
+        ("pump_radial", 1, 0.015),
+        ("pump_radial", 2, 0.008),
+        ("pump_radial", 3, 0.005),
+    ),
 }
 # combination: 70 % of parallel plus 70 % of angular (no source)
 FAULT_HARMONICS["align combination"] = tuple(
