@@ -4,7 +4,7 @@ One run (a condition directory) is generated at once for all its channels:
 the rig's sources (shaft harmonics, vane pass, impacts, flow noise,
 cavitation) are drawn once per acquisition and every channel sees them through
 its own transfer path (``synth_model.CHANNELS``), so channels are simultaneous
-views of the same event; the fault signatures are ``synth_faults``'. Each run is
+views of the same event; the fault signatures come from ``synth_faults``. Each run is
 also an installation at an operating point: the flow noise and vane pass scale
 with the operating point, shared by every channel (and by the classes of one
 session, ``synth_faults.SESSIONS``), and each channel's response to the healthy
@@ -125,11 +125,11 @@ def _sources(
             gain = drift[0] if part == 0 else 1.0
             lowfreq[part][group] = lowfreq[part].get(group, 0) + gain * amp * rotation[order]
     impacts = {"motor_bearing": np.zeros(n), "pump_bearing": np.zeros(n), "coupling": np.zeros(n)}
-    if condition in f.BEARING_FAULTS:
-        where, bearing, race, amp = f.BEARING_FAULTS[condition]
+    if condition in f.IMPACTS:
+        where, bearing, race, amp = f.IMPACTS[condition]
         size = f.IMPACT_STEPS.get(condition, range(1, level + 1))[level - 1]
-        if bearing is None:  # coupling: impacts at a fixed number per revolution
-            rate, slip, scatter_sd = f1 * float(race), 0.0, f.COUPLING_SCATTER
+        if bearing is None:  # a knock locked to the shaft: a fixed number per revolution
+            rate, slip, scatter_sd = f1 * float(race), 0.0, f.KNOCK_SCATTER
         else:
             rate = f1 * (bearing.bpfo if race == "outer" else bearing.bpfi)
             slip, scatter_sd = f.BEARING_SLIP, 0.0

@@ -40,10 +40,10 @@ from __future__ import annotations
 from .synth_model import MOTOR_BEARING, PUMP_BEARING, VANES, Bearing
 
 __all__ = [
-    "BEARING_FAULTS",
     "CAVITATION",
     "DISCHARGE",
     "FAULT_HARMONICS",
+    "IMPACTS",
     "IMPACT_STEPS",
     "SEVERITY_STEPS",
 ]
@@ -103,12 +103,15 @@ SEVERITY_STEPS: dict[str, tuple[float, ...]] = {
 #: damage (0.429, 0.395, 0.373 g): a damaged impeller delivers less head and flow
 FLOW_TREND: dict[str, float] = {"impeller": -0.085}
 
-#: impacts: class -> (source, bearing or None, race or rate per revolution, g per unit size).
-#: Motor bearing: set by [B]'s growth of ch1 overall RMS with severity. Pump bearing: damage
-#: introduced at assembly, severe from level 1 (the paper: "high vibration energy"); no
-#: source for the pump channels, its ch1 level matches [B]. Coupling: a worn spider knocks
-#: twice per revolution from the first level (backlash), growing slowly: no source.
-BEARING_FAULTS: dict[str, tuple[str, Bearing | None, str | float, float]] = {
+#: impact trains: class -> (source, bearing, race, g per unit size) at a bearing's defect
+#: rate, or (source, None, impacts per revolution, g per unit size) for a shaft-locked
+#: knock. Motor bearing: set by [B]'s growth of ch1 overall RMS with severity. Pump
+#: bearing: damage introduced at assembly, severe from level 1 (the paper: "high vibration
+#: energy"); no source for the pump channels, its ch1 level matches [B]. Coupling: a worn
+#: spider knocks twice per revolution from the first level (backlash), growing slowly;
+#: impeller: a damaged vane's pressure pulse as it passes the cutwater, once per
+#: revolution, on the pump casing. Both: no source.
+IMPACTS: dict[str, tuple[str, Bearing | None, str | float, float]] = {
     "bearing bpfo": ("motor_bearing", MOTOR_BEARING, "outer", 1.0),
     "bearing bpfi": ("motor_bearing", MOTOR_BEARING, "inner", 2.0),
     "bearing pump": ("pump_bearing", PUMP_BEARING, "outer", 1.5),
@@ -121,7 +124,7 @@ IMPACT_STEPS: dict[str, tuple[float, ...]] = {
     "coupling": (2.5, 3.0, 3.5),
 }
 BEARING_SLIP = 0.01  # relative SD of the interval between bearing impacts
-COUPLING_SCATTER = 0.2  # relative SD of one coupling impact's strength
+KNOCK_SCATTER = 0.2  # relative SD of one shaft-locked knock's strength (coupling, impeller)
 
 #: suction cavitation bursts: class -> (peak g at level 1..L, bursts per second). Level 4
 #: set by [P]: ch1 saturates the ADXL345 but not the ADXL357 and stays inside the
