@@ -158,13 +158,15 @@ def main() -> None:
     classifiers = ["lr", "knn", "xgb"] if args.quick else None
     repeats = 1 if args.quick else args.repeats
     start = time.perf_counter()
-    scores, figures, classes = [], [], []
+    scores, figures, classes, models = [], [], [], []
     with tempfile.TemporaryDirectory(prefix="calibrate_pump_") as tmp:
         for seed in range(args.seeds):
             where = Path(tmp)
             results, per_class, confusion = run_seed(seed, classifiers, repeats, args.jobs, where)
             mean = results.groupby(["machine", "scenario"])["macro_f1"].mean()
             scores.append(mean.rename(seed))
+            by_model = results.groupby(["machine", "scenario", "classifier"])["macro_f1"].mean()
+            models.append(by_model.rename(seed))
             figures.append(pd.Series(findings(per_class, confusion), name=seed))
             f1 = per_class.groupby(["machine", "class", "scenario"])["f1"].mean()
             classes.append(f1.rename(seed))
@@ -203,6 +205,15 @@ def main() -> None:
         print(f"  {'held    ' if rule(found[key]) else 'not held'}  {text}: {found[key]:.2f}")
     for key in found.index.difference([k for k, _ in CHECKS.values()]):
         print(f"  (figure)  {key}: {found[key]:.2f}")
+    per_model = pd.concat(models, axis=1).median(axis=1).unstack("classifier")
+    names = [c for c in ("lr", "knn", "rf", "xgb", "mlp") if c in per_model.columns]
+    print("per classifier (median over seeds; paper in brackets):")
+    for (machine, scenario), row in per_model.iterrows():
+        paper = dict(
+            zip(("lr", "knn", "rf", "xgb", "mlp"), TABLE4[(machine, scenario)], strict=True)
+        )
+        cells = "  ".join(f"{c} {row[c]:.2f} ({paper[c]:.2f})" for c in names)
+        print(f"  {machine:8} {scenario:14} {cells}")
     per_class_f1 = pd.concat(classes, axis=1).median(axis=1).unstack("scenario")[list(SCENARIOS)]
     print("per-class F1 (mean over classifiers, median over seeds):")
     print(per_class_f1.round(2).to_string())
