@@ -14,8 +14,8 @@ figure it rests on (median over seeds).
 
 Run: ``.venv/bin/python benchmarks/calibrate_pump.py [--seeds 5] [--quick]``.
 ``--quick`` is the reduced protocol (LR, kNN and XGB, one repetition, which
-drops the two stochastic classifiers); the full one takes about 25 s per seed
-on 2 cores, most of it feature extraction. Not part of ``make test``.
+drops the two stochastic classifiers); the full one takes 10-30 s per seed
+on 2 cores. Not part of ``make test``.
 """
 
 from __future__ import annotations
