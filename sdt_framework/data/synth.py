@@ -4,11 +4,14 @@ One run (a condition directory) is generated at once for all its channels:
 the rig's sources (shaft harmonics, vane pass, impacts, flow noise,
 cavitation) are drawn once per acquisition and every channel sees them through
 its own transfer path (``synth_model.CHANNELS``), so channels are simultaneous
-views of the same event. Each run is also an installation: its channels'
-response to the healthy machine and to flow noise is scaled by factors drawn
-per healthy run, or per fault class (shared by its levels), calibrated to the
-real archive's spread (docs/data.md). All draws come from ``seeding.rng(seed,
-machine, run or class, ...)``: the same seed gives bit-identical signals
+views of the same event; the fault signatures come from ``synth_faults``. Each run is
+also an installation at an operating point: the flow noise and vane pass scale
+with the operating point, shared by every channel (and by the classes of one
+session, ``synth_faults.SESSIONS``), and each channel's response to the healthy
+machine and to flow noise with its mounting, drawn per healthy run, or per fault
+class (shared by its levels), calibrated to the real archive's spread
+(docs/data.md). All draws come from ``seeding.rng(seed, machine, run, class or
+session, ...)``: the same seed gives bit-identical signals
 whatever the selection or loading order. Generation is vectorised: harmonics
 as complex exponentials, impulse trains by index arithmetic filtered by
 band-pass resonators (``scipy.signal.lfilter``), cavitation as band-passed
@@ -23,6 +26,7 @@ import numpy as np
 from scipy import signal
 
 from ..seeding import rng
+from . import synth_faults as f
 from . import synth_model as m
 
 __all__ = ["FS_HZ", "generate_run"]
@@ -53,8 +57,8 @@ def _resonator(freq: float, zeta: float, fs: float) -> tuple[np.ndarray, np.ndar
 
 
 @cache
-def _cavitation_band(fs: float) -> np.ndarray:
-    return signal.butter(4, m.CAVITATION_BAND_HZ, btype="bandpass", fs=fs, output="sos")
+def _band(band: tuple[float, float], fs: float) -> np.ndarray:
+    return signal.butter(4, band, btype="bandpass", fs=fs, output="sos")
 
 
 def _impulses(n: int, fs: float, times: np.ndarray, amplitudes: np.ndarray) -> np.ndarray:
@@ -74,9 +78,12 @@ def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatte
     fixed per machine and component (the added unbalance mass always at the same angle).
     """
     parts: tuple[dict, dict] = ({}, {})
-    table = [(0, g, k, a, "base") for g, k, a in m.BASELINE]
-    step = m.SEVERITY_STEPS.get(condition, range(1, level + 1))[level - 1]
-    table += [(1, g, k, a * step, condition) for g, k, a in m.FAULT_HARMONICS.get(condition, ())]
+    hydraulic = scatter["hydraulic"]  # vane-pass pulsation follows the operating point
+    table = [
+        (0, g, k, a * (hydraulic if k % m.VANES == 0 else 1.0), "base") for g, k, a in m.BASELINE
+    ]
+    step = f.SEVERITY_STEPS.get(condition, range(1, level + 1))[level - 1]
+    table += [(1, g, k, a * step, condition) for g, k, a in f.FAULT_HARMONICS.get(condition, ())]
     for part, group, order, amp, tag in table:
         phase = rng(seed, machine.name, "phase", group, order, tag).uniform(0, 2 * np.pi)
         key = (group, float(order))
@@ -86,15 +93,24 @@ def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatte
 
 
 def _sources(
-    machine: m.Machine, condition: str, level: int, run: str, acq: int, n: int, seed: int, fs: float
+    machine: m.Machine,
+    condition: str,
+    level: int,
+    run: str,
+    acq: int,
+    n: int,
+    seed: int,
+    fs: float,
+    point: float,
 ) -> dict:
-    """Everything shared by the channels of one acquisition."""
+    """Everything shared by the channels of one acquisition (``point``: operating point)."""
     run_gen = rng(seed, machine.name, run, "run")
     speed = 1 + _clipped_normal(run_gen, m.SPEED_JITTER, 3)
     groups = ("motor_radial", "motor_axial", "pump_radial", "pump_axial", "impacts", "cavitation")
     scatter = dict(
         zip(groups, np.exp(_clipped_normal(run_gen, m.AMPLITUDE_SCATTER, 2, 6)), strict=True)
     )
+    scatter["hydraulic"] = point**m.VANE_PASS_EXPONENT
     gen = rng(seed, machine.name, run, "acquisition", acq)
     f1 = machine.shaft_hz * speed * (1 + _clipped_normal(gen, 5e-4, 3))
     theta = gen.uniform(0, 2 * np.pi)  # shaft angle at the first sample
@@ -109,40 +125,46 @@ def _sources(
             gain = drift[0] if part == 0 else 1.0
             lowfreq[part][group] = lowfreq[part].get(group, 0) + gain * amp * rotation[order]
     impacts = {"motor_bearing": np.zeros(n), "pump_bearing": np.zeros(n), "coupling": np.zeros(n)}
-    if condition in m.BEARING_FAULTS:
-        where, bearing, race, amp = m.BEARING_FAULTS[condition]
-        rate = f1 * (bearing.bpfo if race == "outer" else bearing.bpfi)
+    if condition in f.IMPACTS:
+        where, bearing, race, amp = f.IMPACTS[condition]
+        size = f.IMPACT_STEPS.get(condition, range(1, level + 1))[level - 1]
+        if bearing is None:  # a knock locked to the shaft: a fixed number per revolution
+            rate, slip, scatter_sd = f1 * float(race), 0.0, f.KNOCK_SCATTER
+        else:
+            rate = f1 * (bearing.bpfo if race == "outer" else bearing.bpfi)
+            slip, scatter_sd = f.BEARING_SLIP, 0.0
         count = int(n / fs * rate) + 2
-        steps = (1 + _clipped_normal(gen, m.BEARING_SLIP, 3, count)) / rate
+        steps = (1 + _clipped_normal(gen, slip, 3, count)) / rate
         times = gen.uniform(0, 1 / rate) + np.cumsum(steps) - steps[0]
-        amps = np.full(count, amp * level * scatter["impacts"])
+        amps = amp * size * scatter["impacts"] * (1 + _clipped_normal(gen, scatter_sd, 3, count))
         if race == "inner":  # the defect passes through the load zone once per revolution
             amps *= 0.3 + 0.7 * (1 + np.cos(2 * np.pi * f1 * times + theta)) / 2
         impacts[where] = _impulses(n, fs, times, amps)
-    if condition == "coupling":
-        times = (np.arange(int(2 * f1 * n / fs) + 2) + gen.uniform(0, 1)) / (2 * f1)
-        amps = (
-            m.COUPLING_IMPACT_G
-            * level
-            * scatter["impacts"]
-            * (1 + _clipped_normal(gen, 0.2, 3, times.size))
-        )
-        impacts["coupling"] = _impulses(n, fs, times, amps)
     cavitation = np.zeros(n)
-    if condition in m.CAVITATION:
-        amplitudes, rates = m.CAVITATION[condition]
+    if condition in f.CAVITATION:
+        amplitudes, rates = f.CAVITATION[condition]
         amp = amplitudes[level - 1] * scatter["cavitation"]
         vpf = m.VANES * f1
         # bursts collapse as a vane passes the low-pressure zone: a random subset of vane passes
         passes = (np.arange(int(vpf * n / fs) + 1) + gen.uniform(0, 1)) / vpf
         chosen = passes[gen.random(passes.size) < rates[level - 1] / vpf]
-        burst = np.exp(-np.arange(int(5 * m.CAVITATION_BURST_S * fs)) / (m.CAVITATION_BURST_S * fs))
+        burst = np.exp(-np.arange(int(5 * f.CAVITATION_BURST_S * fs)) / (f.CAVITATION_BURST_S * fs))
         strength = amp * np.exp(_clipped_normal(gen, 0.35, 3, chosen.size))
         envelope = signal.fftconvolve(_impulses(n, fs, chosen, strength), burst)[:n]
-        envelope += m.CAVITATION_HISS * amp * (1 + np.cos(2 * np.pi * vpf * t)) / 2
-        carrier = signal.sosfilt(_cavitation_band(fs), gen.standard_normal(n))
+        envelope += f.CAVITATION_HISS * amp * (1 + np.cos(2 * np.pi * vpf * t)) / 2
+        carrier = signal.sosfilt(_band(f.CAVITATION_BAND_HZ, fs), gen.standard_normal(n))
         cavitation = envelope * carrier / np.std(carrier)
-    flow = drift[1] * gen.standard_normal(n)
+    if condition in f.DISCHARGE:
+        hiss, surge = f.DISCHARGE[condition]
+        carrier = signal.sosfilt(_band(f.DISCHARGE_BAND_HZ, fs), gen.standard_normal(n))
+        cavitation = hiss[level - 1] * scatter["cavitation"] * carrier / np.std(carrier)
+        lo, hi = f.RECIRCULATION_ORDERS
+        sos = signal.butter(2, (lo * f1, hi * f1), btype="bandpass", fs=fs, output="sos")
+        wave = signal.sosfilt(sos, gen.standard_normal(n))
+        wave = signal.hilbert(wave / np.std(wave)) * surge[level - 1] * scatter["pump_radial"]
+        lowfreq[1]["pump_radial"] = lowfreq[1].get("pump_radial", 0) + wave
+    trend = np.exp(f.FLOW_TREND.get(condition, 0.0) * level)  # hydraulic power lost
+    flow = drift[1] * trend * gen.standard_normal(n)
     return {"lowfreq": lowfreq, "impacts": impacts, "flow": flow, "cavitation": cavitation}
 
 
@@ -150,7 +172,8 @@ def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float, insta
     """One sensor's view of the sources: complex gains, resonances, direct cavitation, noise.
 
     ``install`` = (low, broadband): this run's factors on the channel's response
-    to the healthy machine's shaft-synchronous vibration and to flow noise.
+    to the healthy machine's shaft-synchronous vibration, and to flow noise, per
+    resonance (operating point x mounting).
     """
     out = np.zeros(noise.size, dtype=complex)
     base, fault = src["lowfreq"]
@@ -160,10 +183,10 @@ def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float, insta
         out += path.gains[group] * wave
     result = out.real + path.cavitation * src["cavitation"] + noise
     excitation = sum(path.impacts[k] * v for k, v in src["impacts"].items())
-    flow = src["flow"] * (m.FLOW_NOISE_G * install[1])
-    for freq, zeta, weight in path.modes:
+    flow = src["flow"] * m.FLOW_NOISE_G
+    for (freq, zeta, weight), mount in zip(path.modes, install[1], strict=True):
         b, a, gain = _resonator(freq, zeta, fs)
-        result += weight * signal.lfilter(b, a, excitation + flow / gain)
+        result += weight * signal.lfilter(b, a, excitation + mount * flow / gain)
     return result
 
 
@@ -197,18 +220,28 @@ def generate_run(
     n = round(duration_s * fs)
     out = {ch: np.empty((acquisitions, n)) for ch in channels}
     # installation: each healthy run is its own; the levels of a fault class share the
-    # class campaign's, each level with a small residual of its own. Drawn per channel,
-    # so independent of which channels are selected.
-    campaign, residual = (run, 0.0) if condition == "healthy" else (condition, m.LEVEL_SCATTER)
+    # class campaign's, each level with a small residual of its own. The operating point
+    # (flow noise) is shared by the channels, and by the classes of one session, as is
+    # the mounting where the session leaves it in place; the mounting is drawn per
+    # channel and resonance, so independent of which channels are selected.
+    campaign, own_sd = (run, (0.0, 0.0)) if condition == "healthy" else (condition, m.LEVEL_SCATTER)
+    session = f.SESSIONS.get(campaign, campaign)
+    point_gen = rng(seed, machine, session, "flow point")
+    point = np.exp(_clipped_normal(point_gen, m.FLOW_POINT_SD, 2.5))
     install = {}
     for ch in channels:
-        gen, own = rng(seed, machine, campaign, "install", ch), rng(seed, machine, run, "level", ch)
-        install[ch] = tuple(
-            float(np.exp(_clipped_normal(gen, sd, 2.5) + _clipped_normal(own, residual, 2.5)))
-            for sd in (m.CHANNELS[ch].install_sd, m.HF_INSTALL_SD)
+        mounting = session if session in f.MOUNTING_KEPT else campaign
+        gen = rng(seed, machine, mounting, "install", ch)
+        own = rng(seed, machine, run, "level", ch)
+        path = m.CHANNELS[ch]
+        low = _clipped_normal(gen, path.install_sd, 2.5) + _clipped_normal(own, own_sd[0], 2.5)
+        highs = _clipped_normal(gen, m.HF_MOUNT_SD, 2.5, len(path.modes))
+        install[ch] = (
+            float(np.exp(low)),
+            tuple(point * np.exp(highs + _clipped_normal(own, own_sd[1], 2.5))),
         )
     for acq in range(acquisitions):
-        src = _sources(spec, condition, severity, run, acq, n, seed, fs)
+        src = _sources(spec, condition, severity, run, acq, n, seed, fs, point)
         for ch in channels:
             noise = rng(seed, machine, run, "noise", acq, ch).normal(0, m.SENSOR_NOISE_G, n)
             out[ch][acq] = _channel(src, m.CHANNELS[ch], noise, fs, install[ch])

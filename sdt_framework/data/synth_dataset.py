@@ -28,9 +28,10 @@ from .synth import FS_HZ, generate_run
 __all__ = ["DEFAULTS", "GENERATOR", "SyntheticPump", "open_synthetic"]
 
 DEFAULTS = {"seed": 0, "acquisitions": 1, "duration": 12.0}
-#: fingerprint of the generator: the model and the code that draws from it
+#: fingerprint of the generator: the model, the fault signatures and the code that draws
+MODULES = ("synth.py", "synth_model.py", "synth_faults.py")
 GENERATOR = hashlib.sha256(
-    b"".join(Path(__file__).with_name(n).read_bytes() for n in ("synth.py", "synth_model.py"))
+    b"".join(Path(__file__).with_name(n).read_bytes() for n in MODULES)
 ).hexdigest()[:12]
 
 

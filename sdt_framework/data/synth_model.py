@@ -1,4 +1,6 @@
-"""Physical constants of the synthetic pump test rig: machines, bearings, paths, faults.
+"""Physical constants of the synthetic pump test rig: machines, bearings, paths, scatter.
+
+The fault signatures are in ``synth_faults.py``.
 
 Everything the generator (``synth.py``) assumes is here, with its reason, so
 that the documentation and the tests can compute the expected frequencies
@@ -220,80 +222,23 @@ BASELINE: tuple[tuple[str, float, float], ...] = (
     ("pump_axial", VANES, 0.02),
 )
 
-#: fault harmonics added per severity level: class -> (group, order, g per level).
-#: Unbalance and parallel misalignment: set by [A]'s growth of band RMS with
-#: severity (ch2, ch5, ch1); angular: scaled down until its low band stays inside
-#: the healthy spread, as [A] reports; coupling, impeller, pump bearing: no source.
-FAULT_HARMONICS: dict[str, tuple[tuple[str, float, float], ...]] = {
-    "unbalance motor": (("motor_radial", 1, 0.0425),),
-    "unbalance pump": (("pump_radial", 1, 0.005),),
-    "align parallel": (
-        ("motor_radial", 2, 0.032),
-        ("pump_radial", 2, 0.027),
-        ("motor_radial", 1, 0.011),
-        ("motor_axial", 2, 0.0053),
-    ),
-    "align angular": (
-        ("motor_axial", 1, 0.014),
-        ("pump_axial", 1, 0.01),
-        ("motor_axial", 2, 0.008),
-        ("motor_radial", 1, 0.003),
-    ),
-    "coupling": (
-        ("motor_radial", 1, 0.02),
-        ("motor_radial", 2, 0.03),
-        ("motor_radial", 3, 0.025),
-        ("pump_radial", 3, 0.015),
-    ),
-    "impeller": (
-        ("pump_radial", VANES, 0.08),
-        ("pump_radial", 2 * VANES, 0.03),
-        ("pump_radial", 1, 0.03),
-    ),
-    "bearing pump": (("pump_radial", 1, 0.02),),
-}
-#: effective size of each level where the levels are not equal steps (default: the level
-#: number): [A]'s unbalance motor levels 1-4 leave ch2's low band within 6 % of each
-#: other (0.034-0.039 g), levels 5 and 6 raise it 1.9 and 2.6 times
-SEVERITY_STEPS: dict[str, tuple[float, ...]] = {
-    "unbalance motor": (0.025, 0.05, 0.075, 0.1, 1.6, 2.4),
-}
-# combination: 70 % of parallel plus 70 % of angular (no source)
-FAULT_HARMONICS["align combination"] = tuple(
-    (group, order, 0.7 * amp)
-    for name in ("align parallel", "align angular")
-    for group, order, amp in FAULT_HARMONICS[name]
-)
-
-#: cavitation bursts: class -> (peak amplitude g at level 1..L, bursts per second).
-#: Suction 4 set by [P]: ch1 saturates the ADXL345 but not the ADXL357, and stays
-#: inside the reference's +-80 g; the other levels in the model's proportion;
-#: discharge: no source, kept.
-CAVITATION: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
-    "cavitation suction": ((0.84, 2.11, 4.75, 9.5), (8.0, 12.0, 16.0, 20.0)),
-    "cavitation discharge": ((0.5, 0.7, 0.95, 1.25, 1.6), (6.0, 8.0, 10.0, 12.0, 14.0)),
-}
-
-#: bearing impacts: class -> (bearing location, bearing, race, impact g per level).
-#: Motor bearing: set by [B]'s growth of ch1 overall RMS with severity; pump
-#: bearing: no source for the pump channels, kept (its ch1 level matches [B]).
-BEARING_FAULTS: dict[str, tuple[str, Bearing, str, float]] = {
-    "bearing bpfo": ("motor_bearing", MOTOR_BEARING, "outer", 1.0),
-    "bearing bpfi": ("motor_bearing", MOTOR_BEARING, "inner", 2.0),
-    "bearing pump": ("pump_bearing", PUMP_BEARING, "outer", 1.5),
-}
-
-COUPLING_IMPACT_G = 0.35  # g per level, two impacts per revolution (worn jaw spider): no source
 # broadband flow/structure noise, RMS per unit mode weight: Motor-2 ch1 healthy overall
 # RMS 0.53 g, 96 % of it in 1-9 kHz [A, B]; Motor-4 (no source) takes the same
 FLOW_NOISE_G = 0.47
 SENSOR_NOISE_G = 0.004  # RMS of independent broadband noise per channel
 SPEED_JITTER = 0.002  # relative SD of run speed (clipped at 3 SD): [M] says +- 5 rpm
-AMPLITUDE_SCATTER = 0.03  # log-normal SD of run-to-run source strength (clipped at 2 SD)
-HF_INSTALL_SD = 0.34  # broadband, per installation: healthy CV 0.21 [B], 0.32 [A] (M2 ch1)
-LEVEL_SCATTER = 0.06  # a fault level around its campaign: within-class CV 0.06-0.07 [A, B]
-ACQUISITION_DRIFT = 0.035  # between acquisitions of a run: CV 0.026 [A], 0.04 [B]
-BEARING_SLIP = 0.01  # relative SD of the interval between bearing impacts
-CAVITATION_BURST_S = 0.006  # decay time constant of one cavitation burst envelope
-CAVITATION_HISS = 0.2  # continuous cavitation noise, as a fraction of the burst amplitude
-CAVITATION_BAND_HZ = (1000.0, 5000.0)  # low enough to clip the ADXL345, peaks < 80 g [P]
+AMPLITUDE_SCATTER = 0.01  # log-normal SD of run-to-run source strength (clipped at 2 SD)
+# broadband level per installation, log-normal SD: healthy run-to-run CV 0.21 [B], 0.32 [A]
+# (Motor-2 ch1, every channel alike) split into the operating point, shared by every
+# channel (flow and pressure set by the valves: flow noise grows with the distance from the
+# best-efficiency point), and each channel's mounting (its resonances' coupling to the casing)
+FLOW_POINT_SD = 0.24
+HF_MOUNT_SD = 0.12
+# vane-pass pulsation ~ operating point ** exponent: both it and the flow noise grow away
+# from the best-efficiency flow (Brennen, "Hydrodynamics of Pumps", ch. 9); exponent: no source
+VANE_PASS_EXPONENT = 1.0
+# a fault level around its campaign (log-normal SD: shaft-synchronous, broadband): [A]'s
+# unbalance motor levels 1-4 spread by CV 0.062 in ch2's low band; the broadband of a
+# class's runs stays on its trajectory (impeller's fall with damage: [B], FLOW_TREND)
+LEVEL_SCATTER = (0.05, 0.02)
+ACQUISITION_DRIFT = 0.03  # between acquisitions of a run: CV 0.026 [A], 0.04 [B]

@@ -17,6 +17,7 @@ from scipy import signal
 
 from sdt_framework.api import degrade
 from sdt_framework.data import open_synthetic, synth_dataset
+from sdt_framework.data import synth_faults as faults
 from sdt_framework.data import synth_model as model
 from sdt_framework.data.synth import generate_run
 from sdt_framework.registry import build_registry
@@ -71,8 +72,9 @@ def band_rms(x: np.ndarray, lo: float, hi: float) -> float:
 @pytest.fixture
 def no_scatter(monkeypatch: pytest.MonkeyPatch) -> None:
     """The physical model alone: no installation scatter, drift or source scatter."""
-    for name in ("HF_INSTALL_SD", "LEVEL_SCATTER", "ACQUISITION_DRIFT", "AMPLITUDE_SCATTER"):
+    for name in ("FLOW_POINT_SD", "HF_MOUNT_SD", "ACQUISITION_DRIFT", "AMPLITUDE_SCATTER"):
         monkeypatch.setattr(model, name, 0.0)
+    monkeypatch.setattr(model, "LEVEL_SCATTER", (0.0, 0.0))
     for ch, path in model.CHANNELS.items():
         monkeypatch.setitem(model.CHANNELS, ch, dataclasses.replace(path, install_sd=0.0))
 
@@ -127,7 +129,7 @@ def test_unbalance_1x_is_the_vector_sum_of_residual_and_added_unbalance() -> Non
         for k in range(1, 7)
     ]
     power = np.square(amps)
-    size = np.array([0.0, *model.SEVERITY_STEPS["unbalance motor"]])
+    size = np.array([0.0, *faults.SEVERITY_STEPS["unbalance motor"]])
     coef, residual, *_ = np.polyfit(size, power, 2, full=True)
     assert coef[0] > 0
     assert residual[0] < 1e-3 * np.sum((power - power.mean()) ** 2)  # R^2 > 0.999
@@ -196,7 +198,7 @@ def test_seed_determinism_and_selection_independence() -> None:
 def test_recordings_name_the_generator_so_old_cached_features_are_not_reused() -> None:
     here = Path(synth_dataset.__file__).parent
     digest = hashlib.sha256(
-        (here / "synth.py").read_bytes() + (here / "synth_model.py").read_bytes()
+        b"".join((here / n).read_bytes() for n in ("synth.py", "synth_model.py", "synth_faults.py"))
     ).hexdigest()[:12]
     (rec, *_) = open_synthetic(machines="Motor-2").recordings()
     assert rec.metadata()["source"] == f"synthetic (generator {digest})"

@@ -17,6 +17,8 @@ import textwrap
 import pandas as pd
 import pytest
 
+from sdt_framework.data.synth_dataset import GENERATOR
+
 SWEEP = """
 [sweep]
 base = "adxl345"
@@ -52,7 +54,7 @@ def test_every_skipped_point_is_written_with_its_reason(sdt_main, tmp_path):
         name = f"adxl345~rate=4e+04,range={full_scale}"
         assert reasons[name] == (
             f"sensor '{name}' samples at 40000 Hz, above the data's 20000 Hz "
-            "(e.g. synthetic (generator 29407e766d4a))"
+            f"(e.g. synthetic (generator {GENERATOR}))"
         )
     # each skipped point is said once, as a point (not again as a skipped sensor)
     assert err.count("skipped point ") == 2 and "skipped sensor adxl345~" not in err

@@ -1,0 +1,224 @@
+"""Calibration of the synthetic pump against the paper's reference chain (Table 4, section 4).
+
+Runs the paper's pipeline on the default synthetic dataset exactly as ``sdt
+benchmark`` does (the package's ``load_config`` / ``plan_benchmark`` /
+``run_benchmark``): the reference sensor ``wilcoxon-786b10`` only, the paper8
+features, every classifier (default: all five), the forward, backward and
+interpolation scenarios, once per generator seed (``dataset_options.seed``).
+For each machine and scenario it prints the Macro F1 (mean over classifiers and
+repetitions) as the median over seeds and its range, beside the paper's Table
+4 reference figure (mean of its five classifiers), and whether the median is
+within 0.10 of it. It then checks the paper's per-class findings (section 4)
+on the per-class F1 and confusion tables, each as held / not held with the
+figure it rests on (median over seeds).
+
+Run: ``.venv/bin/python benchmarks/calibrate_pump.py [--seeds 5] [--quick]``.
+``--quick`` is the reduced protocol (LR, kNN and XGB, one repetition, which
+drops the two stochastic classifiers); the full one takes 10-30 s per seed
+on 2 cores. Not part of ``make test``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from sdt_framework.bench.config import load_config
+from sdt_framework.bench.plan import plan_benchmark
+from sdt_framework.bench.results import tidy
+from sdt_framework.bench.runner import run_benchmark
+from sdt_framework.registry import build_registry
+
+REFERENCE = "wilcoxon-786b10"
+SCENARIOS = ("forward", "backward", "interpolation")
+#: the paper's Table 4, reference row, per classifier (LR, kNN, RF, XGB, MLP)
+TABLE4 = {
+    ("Motor-4", "forward"): (0.6768, 0.6907, 0.4239, 0.5046, 0.6911),
+    ("Motor-4", "backward"): (0.4186, 0.3811, 0.3587, 0.4596, 0.3976),
+    ("Motor-4", "interpolation"): (0.9567, 0.7567, 0.7123, 0.8883, 0.9224),
+    ("Motor-2", "forward"): (0.4165, 0.5034, 0.8751, 0.8360, 0.4606),
+    ("Motor-2", "backward"): (0.2474, 0.2474, 0.1833, 0.3144, 0.1898),
+    ("Motor-2", "interpolation"): (0.4079, 0.6960, 0.6169, 0.5308, 0.5892),
+}
+TOLERANCE = 0.10
+MISALIGNMENT = ("align angular", "align parallel", "align combination")
+OVERLAP = ("healthy", "unbalance motor", "unbalance pump", "align angular")
+BEARINGS = ("bearing bpfo", "bearing bpfi", "bearing pump")
+
+
+def run_seed(seed: int, classifiers: list[str] | None, repeats: int, jobs: int, where: Path):
+    """(results, per_class, confusion) of the reference chain on generator seed ``seed``."""
+    options = {
+        "dataset_options": {"seed": seed},
+        "sensors": [REFERENCE],
+        "repeats": repeats,
+        "jobs": jobs,
+        "report": False,
+        "cache_dir": str(where / "cache"),
+    }
+    if classifiers:
+        options["classifiers"] = classifiers
+    plan = plan_benchmark(load_config(None, options), build_registry())
+    result = run_benchmark(plan, where / f"seed{seed}")
+    return tidy(result.runs)
+
+
+def share(confusion: pd.DataFrame, true: tuple[str, ...], into: tuple[str, ...]) -> float:
+    """Of the misclassified test windows of classes ``true``, the share predicted as ``into``."""
+    wrong = confusion[confusion["true"].isin(true) & (confusion["true"] != confusion["predicted"])]
+    total = wrong["count"].sum()
+    return float(wrong.loc[wrong["predicted"].isin(into), "count"].sum() / total) if total else 0.0
+
+
+def findings(per_class: pd.DataFrame, confusion: pd.DataFrame) -> dict[str, float]:
+    """The figures the paper's section 4 findings rest on, for one seed."""
+    f1 = per_class.groupby(["machine", "scenario", "class", "classifier"])["f1"].mean()
+    by_class = f1.groupby(["machine", "scenario", "class"]).mean()
+    out: dict[str, float] = {}
+    for cls in ("cavitation suction", "cavitation discharge"):
+        part = f1.xs(("Motor-4", cls), level=("machine", "class"))
+        # the worst scenario's share of classifiers with F1 >= 0.9
+        out[f"{cls}: classifiers with F1 >= 0.9 (worst scenario)"] = float(
+            (part >= 0.9).groupby("scenario").mean().min()
+        )
+    m4 = by_class.xs("Motor-4", level="machine").unstack("scenario")
+    swing = m4.max(axis=1) - m4.min(axis=1)
+    out["misalignment: F1 swing over scenarios, rank among 9 classes (1 = largest)"] = float(
+        swing.rank(ascending=False)[list(MISALIGNMENT)].mean()
+    )
+    m4c = confusion[confusion["machine"] == "Motor-4"]
+    out["misalignment: share of its errors into another misalignment class"] = share(
+        m4c, MISALIGNMENT, MISALIGNMENT
+    )
+    out["healthy/unbalance/angular: share of their errors within the group"] = share(
+        m4c, OVERLAP, OVERLAP
+    )
+    m2c = confusion[confusion["machine"] == "Motor-2"]
+    out["Motor-2 impeller: share of its errors into bearing faults"] = share(
+        m2c, ("impeller",), BEARINGS
+    )
+    m2 = by_class.xs("Motor-2", level="machine").unstack("scenario")
+    out["Motor-2 impeller: recall (mean over scenarios)"] = float(
+        per_class[(per_class["machine"] == "Motor-2") & (per_class["class"] == "impeller")][
+            "recall"
+        ].mean()
+    )
+    out["Motor-2 bearing pump: F1 in its worst scenario"] = float(m2.loc["bearing pump"].min())
+    out["Motor-2 bearing pump: rank of its worst-scenario F1 (1 = best)"] = float(
+        m2.min(axis=1).rank(ascending=False)["bearing pump"]
+    )
+    return out
+
+
+#: finding -> (figure, rule it must satisfy, what the paper says)
+CHECKS = {
+    "cavitation suction F1 >= 0.9, most classifiers, every scenario": (
+        "cavitation suction: classifiers with F1 >= 0.9 (worst scenario)",
+        lambda v: v > 0.5,
+    ),
+    "cavitation discharge F1 >= 0.9, most classifiers, every scenario": (
+        "cavitation discharge: classifiers with F1 >= 0.9 (worst scenario)",
+        lambda v: v > 0.5,
+    ),
+    "misalignment classes the most scenario-sensitive (mean rank <= 4 of 9)": (
+        "misalignment: F1 swing over scenarios, rank among 9 classes (1 = largest)",
+        lambda v: v <= 4,
+    ),
+    "misalignment confused with each other (above chance 2/8)": (
+        "misalignment: share of its errors into another misalignment class",
+        lambda v: v > 2 / 8,
+    ),
+    "healthy, unbalance, angular overlap (errors within group above chance 3/8)": (
+        "healthy/unbalance/angular: share of their errors within the group",
+        lambda v: v > 3 / 8,
+    ),
+    "Motor-2 impeller confused with bearing faults (above chance 3/4)": (
+        "Motor-2 impeller: share of its errors into bearing faults",
+        lambda v: v > 3 / 4,
+    ),
+    "Motor-2 pump bearing consistently high (best worst-scenario F1, >= 0.8)": (
+        "Motor-2 bearing pump: F1 in its worst scenario",
+        lambda v: v >= 0.8,
+    ),
+}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seeds", type=int, default=5, help="generator seeds 0..N-1 (default 5)")
+    parser.add_argument("--quick", action="store_true", help="LR, kNN, XGB, one repetition")
+    parser.add_argument("--repeats", type=int, default=2, help="repetitions (default 2)")
+    parser.add_argument("--jobs", type=int, default=2, help="processes (default 2)")
+    args = parser.parse_args()
+    classifiers = ["lr", "knn", "xgb"] if args.quick else None
+    repeats = 1 if args.quick else args.repeats
+    start = time.perf_counter()
+    scores, figures, classes, models = [], [], [], []
+    with tempfile.TemporaryDirectory(prefix="calibrate_pump_") as tmp:
+        for seed in range(args.seeds):
+            where = Path(tmp)
+            results, per_class, confusion = run_seed(seed, classifiers, repeats, args.jobs, where)
+            mean = results.groupby(["machine", "scenario"])["macro_f1"].mean()
+            scores.append(mean.rename(seed))
+            by_model = results.groupby(["machine", "scenario", "classifier"])["macro_f1"].mean()
+            models.append(by_model.rename(seed))
+            figures.append(pd.Series(findings(per_class, confusion), name=seed))
+            f1 = per_class.groupby(["machine", "class", "scenario"])["f1"].mean()
+            classes.append(f1.rename(seed))
+    table = pd.concat(scores, axis=1)
+    print(
+        f"reference chain ({REFERENCE}), Macro F1 mean over "
+        f"{'LR, kNN, XGB' if args.quick else 'the five classifiers'} x {repeats} repetition(s), "
+        f"{args.seeds} generator seeds; paper: Table 4 reference row, mean of its five"
+    )
+    head = ("machine", "scenario", "paper", "median", "min-max", "diff", "within 0.10")
+    rows = []
+    for machine in ("Motor-4", "Motor-2"):
+        for scenario in SCENARIOS:
+            vals = table.loc[(machine, scenario)].to_numpy()
+            paper = float(np.mean(TABLE4[(machine, scenario)]))
+            mid = float(np.median(vals))
+            rows.append(
+                (machine, scenario, f"{paper:.2f}", f"{mid:.2f}",
+                 f"{vals.min():.2f}-{vals.max():.2f}", f"{mid - paper:+.2f}",
+                 "yes" if abs(mid - paper) <= TOLERANCE else "NO")
+            )  # fmt: skip
+    widths = [max(len(r[i]) for r in [head, *rows]) for i in range(len(head))]
+    for row in [head, *rows]:
+        print("  ".join(c.ljust(w) for c, w in zip(row, widths, strict=True)).rstrip())
+    print(f"{sum(r[6] == 'yes' for r in rows)}/{len(rows)} within {TOLERANCE} of the paper")
+    medians = table.median(axis=1)
+    for machine in ("Motor-4", "Motor-2"):
+        m = medians[machine]
+        order = " > ".join(m.sort_values(ascending=False).index)
+        held = m["interpolation"] >= m.max() and m["backward"] <= m.min()
+        print(f"{machine}: {order}; interpolation easiest, backward hardest: "
+              f"{'held' if held else 'not held'}")  # fmt: skip
+    found = pd.concat(figures, axis=1).median(axis=1)
+    print("findings (paper section 4; median over seeds):")
+    for text, (key, rule) in CHECKS.items():
+        print(f"  {'held    ' if rule(found[key]) else 'not held'}  {text}: {found[key]:.2f}")
+    for key in found.index.difference([k for k, _ in CHECKS.values()]):
+        print(f"  (figure)  {key}: {found[key]:.2f}")
+    per_model = pd.concat(models, axis=1).median(axis=1).unstack("classifier")
+    names = [c for c in ("lr", "knn", "rf", "xgb", "mlp") if c in per_model.columns]
+    print("per classifier (median over seeds; paper in brackets):")
+    for (machine, scenario), row in per_model.iterrows():
+        paper = dict(
+            zip(("lr", "knn", "rf", "xgb", "mlp"), TABLE4[(machine, scenario)], strict=True)
+        )
+        cells = "  ".join(f"{c} {row[c]:.2f} ({paper[c]:.2f})" for c in names)
+        print(f"  {machine:8} {scenario:14} {cells}")
+    per_class_f1 = pd.concat(classes, axis=1).median(axis=1).unstack("scenario")[list(SCENARIOS)]
+    print("per-class F1 (mean over classifiers, median over seeds):")
+    print(per_class_f1.round(2).to_string())
+    print(f"{time.perf_counter() - start:.0f} s")
+
+
+if __name__ == "__main__":
+    main()
