@@ -124,6 +124,7 @@ def open_synthetic(
     machines: str | Iterable[str] | None = None,
     channels: str | Iterable[str] | None = None,
     conditions: str | Iterable[str] | None = None,
+    triaxial: bool = False,
 ) -> SyntheticPump:
     """The synthetic pump dataset (``path`` is ignored: nothing is read from disk).
 
@@ -137,7 +138,13 @@ def open_synthetic(
         Length of each acquisition, s (default 12, as in NLN-EMP).
     machines, channels, conditions
         Subsets (default both machines, ch1-ch5, every class).
+    triaxial
+        Add ch6, so that ch6, ch2 and ch3 form a triaxial node on the motor drive-end
+        bearing housing (x, y, z: ``synth_model.NODE_AXES``); off by default, the
+        paper's five channels. The other channels' signals do not change with it.
     """
+    if not isinstance(triaxial, bool):
+        raise SDTError(f"synthetic-pump: triaxial must be true or false, got {triaxial!r}")
     if int(acquisitions) < 1:
         raise SDTError(f"synthetic-pump: acquisitions must be >= 1, got {acquisitions}")
     if not 0.2 < float(duration) < math.inf:
@@ -152,6 +159,6 @@ def open_synthetic(
         acquisitions=int(acquisitions),
         duration=float(duration),
         machines=chosen_machines,
-        channels=_select(channels, m.CHANNELS, "channel"),
+        channels=_select(channels, m.ALL_CHANNELS if triaxial else m.CHANNELS, "channel"),
         conditions=chosen_conditions,
     )
