@@ -106,6 +106,9 @@ def fit_predict(
         warnings.simplefilter("ignore", ConvergenceWarning)
         # The MLP's note on a swallowed Ctrl-C: the interrupt is re-raised instead.
         warnings.filterwarnings("ignore", message="Training interrupted by user")
+        # A small training set (node samples: a third of the channel windows) is smaller
+        # than the MLP's fixed batch; scikit-learn then uses the whole set, as it says.
+        warnings.filterwarnings("ignore", message="Got `batch_size` less than 1 or larger")
         estimator.fit(scaler.transform(x_train), y_train)
         predicted = np.asarray(estimator.predict(scaler.transform(x_test))).astype(int)
     return predicted, scaler
