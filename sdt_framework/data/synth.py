@@ -233,7 +233,7 @@ def generate_run(
         mounting = session if session in f.MOUNTING_KEPT else campaign
         gen = rng(seed, machine, mounting, "install", ch)
         own = rng(seed, machine, run, "level", ch)
-        path = m.ALL_CHANNELS[ch]
+        path = m.channel_path(ch)
         low = _clipped_normal(gen, path.install_sd, 2.5) + _clipped_normal(own, own_sd[0], 2.5)
         highs = _clipped_normal(gen, m.HF_MOUNT_SD, 2.5, len(path.modes))
         install[ch] = (
@@ -244,5 +244,5 @@ def generate_run(
         src = _sources(spec, condition, severity, run, acq, n, seed, fs, point)
         for ch in channels:
             noise = rng(seed, machine, run, "noise", acq, ch).normal(0, m.SENSOR_NOISE_G, n)
-            out[ch][acq] = _channel(src, m.ALL_CHANNELS[ch], noise, fs, install[ch])
+            out[ch][acq] = _channel(src, m.channel_path(ch), noise, fs, install[ch])
     return out

@@ -159,6 +159,8 @@ def open_synthetic(
         acquisitions=int(acquisitions),
         duration=float(duration),
         machines=chosen_machines,
-        channels=_select(channels, m.ALL_CHANNELS if triaxial else m.CHANNELS, "channel"),
+        channels=_select(
+            channels, [*m.CHANNELS, *m.NODE_CHANNELS] if triaxial else m.CHANNELS, "channel"
+        ),
         conditions=chosen_conditions,
     )

@@ -30,7 +30,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 __all__ = [
-    "ALL_CHANNELS",
     "CHANNELS",
     "MACHINES",
     "MOTOR_BEARING",
@@ -41,6 +40,7 @@ __all__ = [
     "Bearing",
     "ChannelPath",
     "Machine",
+    "channel_path",
 ]
 
 VANES = 6  # no source for either pump's vane count: kept
@@ -234,7 +234,12 @@ NODE_CHANNELS: dict[str, ChannelPath] = {
     ),
 }
 NODE_AXES = {"ch6": "x", "ch2": "y", "ch3": "z"}
-ALL_CHANNELS = {**CHANNELS, **NODE_CHANNELS}
+
+
+def channel_path(name: str) -> ChannelPath:
+    """The path of ``name``, looked up at call time (a test may replace a path)."""
+    return CHANNELS[name] if name in CHANNELS else NODE_CHANNELS[name]
+
 
 #: healthy baseline harmonics: (group, shaft order, amplitude g); pattern: no source
 BASELINE: tuple[tuple[str, float, float], ...] = (
