@@ -96,3 +96,26 @@ def test_the_size_estimate_counts_node_and_transfer_runs(ran):
 
     plan, result = ran
     assert estimate(plan).runs == len(result.runs)
+
+
+def test_several_nodes_per_run_are_each_their_own_sample_set(small_config, registry, tmp_path):
+    axes = {"ch1": "x", "ch2": "y", "ch3": "z", "ch4": "x", "ch5": "y", "ch6": "z"}
+    config = small_config(
+        dataset_options={"duration": 1.5, "triaxial": True}, channels=list(axes), axes=axes,
+        sample="node", nodes={"motor": ["ch1", "ch2", "ch3"], "pump": ["ch4", "ch5", "ch6"]},
+        classifiers=["lr"], repeats=1,
+    )  # fmt: skip
+    plan = plan_benchmark(config, registry)
+    assert [(n.name, n.channels) for n in plan.sample_nodes] == [
+        ("motor", ("ch1", "ch2", "ch3")), ("pump", ("ch4", "ch5", "ch6"))
+    ]  # fmt: skip
+    from sdt_framework.bench.results import tidy
+
+    results = tidy(run_benchmark(plan, tmp_path / "out").runs)[0]
+    for sensor in ("wilcoxon-786b10", "adxl345"):
+        for node in ("motor", "pump"):
+            rows = results[results["sensor"] == f"{sensor} @ {node}"]
+            assert len(rows) > 0 and (rows["node"] == node).all()
+    channel = results[results["sensor"] == "adxl345"].set_index(["scenario"])["n_test"]
+    motor = results[results["sensor"] == "adxl345 @ motor"].set_index(["scenario"])["n_test"]
+    assert (channel == 6 * motor).all()  # six channels pooled, one vector per node window
