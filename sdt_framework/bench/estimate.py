@@ -159,11 +159,6 @@ def _draws(sensor: SensorSpec, repeats: int, units: int | None) -> int:
     return (repeats if noisy else 1) * drawn
 
 
-def _groups(plan: Plan) -> list[tuple[tuple[str, ...], str]]:
-    """(training chains, test chain) of every run group: each sensor, then each transfer."""
-    return [((s.name,), s.name) for s in plan.sensors] + [(t.train, t.test) for t in plan.transfers]
-
-
 def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
     """Size, estimated wall time, peak memory and disk of ``plan``; ``stored_runs`` are done.
 
@@ -196,11 +191,11 @@ def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
             continue
         train = part[part["side"] == "train"]["run"]
         members = [rec for run in train for rec in by_run.get((machine, run), [])]
-        for train, _ in _groups(plan):  # ordinary, transfer; each on channels and nodes
+        for pair, _ in plan.run_groups():  # ordinary, transfer; each on channels and nodes
             for channels in [None, *(n.channels[:1] for n in plan.sample_nodes)]:
                 n_train = sum(
                     _windows(r, specs[name], config.window_s, config.settle_s)
-                    for name in train
+                    for name in pair.train
                     for r in members
                     if channels is None or r.channel in channels
                 )

@@ -59,6 +59,13 @@ class Plan:
     #: triaxial nodes classified as one sample per window (``sample = "node"``)
     sample_nodes: list[Node] = field(default_factory=list)
 
+    def run_groups(self) -> list[tuple[Transfer, bool]]:
+        """(pair, is a transfer) of every group of runs: each sensor trained and tested on
+        itself, then each transfer pair; each group runs on channels and on every node."""
+        return [(Transfer((s.name,), s.name), False) for s in self.sensors] + [
+            (t, True) for t in self.transfers
+        ]
+
 
 def _pick(names: list[str] | None, lookup: Callable[[str], Any], everything: list) -> list:
     return [lookup(n) for n in names] if names else everything

@@ -76,20 +76,23 @@ def _arrays(rows: pd.DataFrame, names: list[str], side: dict, code: dict, units:
     return out
 
 
-def _sample_sets(plan: Plan, features: pd.DataFrame):
-    """(node name or None for channels, feature table, its feature columns in order)."""
+def _sample_sets(plan: Plan, features: pd.DataFrame) -> list[tuple[str | None, pd.DataFrame, list]]:
+    """(node name or None for channels, feature table, its feature columns in order); each
+    node's table is built once, for every machine and scenario."""
     names = list(plan.feature_set.feature_names)
-    yield None, features, names
+    sets: list[tuple[str | None, pd.DataFrame, list]] = [(None, features, names)]
     for node in plan.sample_nodes:
         table = node_frame(features, node, names)
-        yield node.name, table, [c for c in table.columns if ":" in c]
+        sets.append((node.name, table, [c for c in table.columns if ":" in c]))
+    return sets
 
 
 def plan_tasks(plan: Plan, features: pd.DataFrame, done: set[str]):
     """(key, RunTask or None when ``done`` holds the key) for every run of ``plan``."""
     units = plan.config.units is not None
     specs = {s.name: s for s in plan.sensors}
-    pairs = [(Transfer((s,), s), False) for s in specs] + [(t, True) for t in plan.transfers]
+    pairs = plan.run_groups()
+    sample_sets = _sample_sets(plan, features)
     for (machine, scenario), part in plan.allocation.groupby(["machine", "scenario"], sort=True):
         if (machine, scenario) in plan.skipped:
             continue
@@ -97,7 +100,7 @@ def plan_tasks(plan: Plan, features: pd.DataFrame, done: set[str]):
         classes = tuple(sorted(part["condition"].unique()))
         code = {c: i for i, c in enumerate(classes)}
         base = {"dataset": plan.dataset.name, "machine": machine, "scenario": scenario}
-        for node, table, names in _sample_sets(plan, features):
+        for node, table, names in sample_sets:
             rows = table[(table["machine"] == machine) & table["run"].isin(side)]
             arrays = _arrays(rows, names, side, code, units)
             for sensor_name, unit, repeat in sorted(arrays):
