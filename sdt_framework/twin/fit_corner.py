@@ -5,8 +5,8 @@ A corner shapes the response only near itself: a first-order low-pass is
 from strong judgeable bands (device level at least :data:`STRONG` times the
 base twin's noise in the band) on the axis with the most of them, and only
 when the bands reach where the base corner acts. For a candidate corner
-``fc`` the twin is rerun (:func:`.check.check_twin`: alignment included, so
-the corner's phase is not charged to anything) and its band levels compared
+``fc`` the twin is rerun and aligned (:func:`.align.align`, as the check does,
+so the corner's phase is not charged to anything) and its band levels compared
 with the device's in dB; the gain that best fits those is taken in closed
 form (the mean dB difference), and ``fc`` minimises what is left
 (:func:`scipy.optimize.minimize_scalar`, bounded, on log fc, between a
@@ -25,7 +25,9 @@ import numpy as np
 from scipy import optimize
 
 from ..specs import SensorSpec
-from .check import REFERENCE_LIMIT, CheckResult, check_twin
+from . import spectra
+from .align import align
+from .check import REFERENCE_LIMIT, CheckResult
 from .signals import Pair
 
 __all__ = ["STRONG", "fit_corner"]
@@ -36,10 +38,12 @@ STRONG = 10.0
 REACH = 0.5
 
 
-def _levels(pair: Pair, spec: SensorSpec, keys: list[tuple[str, float]]) -> np.ndarray:
-    """Twin band RMS of ``spec`` at the (axis, centre) ``keys``."""
-    rows = {(b["axis"], b["f_centre_hz"]): b["twin_rms_g"] for b in check_twin(pair, spec).bands}
-    return np.array([rows[k] for k in keys])
+def _levels(pair: Pair, spec: SensorSpec, axis: int, bands: np.ndarray) -> np.ndarray:
+    """Twin band RMS of ``spec`` on ``axis`` in ``bands`` (lower, centre, upper): the twin
+    run and aligned as :func:`.check.check_twin` does, then only its band levels."""
+    a = align(pair, spec)
+    f, density = spectra.psd(a.twin[axis : axis + 1], a.rate_hz)
+    return spectra.band_rms(f, density, bands)[0]
 
 
 def _with_corner(base: SensorSpec, corner_hz: float) -> SensorSpec:
@@ -73,17 +77,22 @@ def fit_corner(
                 f"{REACH:g} x the base's {fc0:g} Hz, where the corner shapes nothing"
             ),
         )
-    keys = [(axis, b["f_centre_hz"]) for b in rows]
+    index = pair.device.axes.index(axis)
+    bands = np.array([[b["f_lower_hz"], b["f_centre_hz"], b["f_upper_hz"]] for b in rows])
     real_db = 20 * np.log10([b["real_rms_g"] for b in rows])
 
     def residual(log_fc: float) -> np.ndarray:
-        twin_db = 20 * np.log10(_levels(pair, _with_corner(base, np.exp(log_fc)), keys))
+        twin_db = 20 * np.log10(_levels(pair, _with_corner(base, np.exp(log_fc)), index, bands))
         diff = real_db - twin_db
         return diff - diff.mean()  # the gain, in closed form, taken out
 
     lo = np.log(fc0 / 4)
     hi = np.log(min(4 * fc0, REFERENCE_LIMIT * pair.reference.rate_hz))
-    best = optimize.minimize_scalar(lambda x: float(residual(x) @ residual(x)),
+
+    def cost_at(log_fc: float) -> float:
+        return float(np.sum(residual(log_fc) ** 2))  # one twin run per evaluation
+
+    best = optimize.minimize_scalar(cost_at,
                                     bounds=(lo, hi), method="bounded",
                                     options={"xatol": 1e-3})  # fmt: skip
     x, cost = float(best.x), float(best.fun)
@@ -97,7 +106,7 @@ def fit_corner(
             ),
         )
     h = 0.05
-    costs = [float(residual(x + d) @ residual(x + d)) for d in (-h, h)]
+    costs = [cost_at(x + d) for d in (-h, h)]
     curvature = (costs[0] - 2 * cost + costs[1]) / h**2
     s2 = max(cost, 1e-12) / (len(rows) - 2)  # two parameters: corner and gain
     se_log = float(np.sqrt(2 * s2 / curvature)) if curvature > 0 else float("inf")
@@ -105,7 +114,7 @@ def fit_corner(
     if not se_log < 0.5:
         return None, None, f"the corner ({corner:.0f} Hz) is determined only to +-{se_log:.0%}"
     fitted = _with_corner(base, corner)
-    twin_db = 20 * np.log10(_levels(pair, fitted, keys))
+    twin_db = 20 * np.log10(_levels(pair, fitted, index, bands))
     gain_db = float(np.mean(real_db - twin_db))
     span = f"{len(rows)} strong judgeable bands of axis {axis}, {rows[0]['f_lower_hz']:.0f}-" \
         f"{rows[-1]['f_upper_hz']:.0f} Hz"  # fmt: skip
