@@ -9,23 +9,14 @@ are used (a microphone subchannel is not an axis).
 
 from __future__ import annotations
 
-import hashlib
 import os
 
 from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
 from ..errors import SDTError
 from .pair_toml import is_pair_toml, load_toml_pair
-from .signals import Pair, Signal
+from .signals import Pair, Signal, digest
 
 __all__ = ["Pair", "Signal", "load_pair"]
-
-
-def _digest(path: str | os.PathLike[str]) -> str:
-    sha = hashlib.sha256()
-    with open(path, "rb") as handle:
-        for block in iter(lambda: handle.read(1 << 20), b""):
-            sha.update(block)
-    return sha.hexdigest()[:12]
 
 
 def _pick(path: str, channels: list[IdeChannel], sensor: str, device: int | None,
@@ -94,7 +85,7 @@ def load_pair(
             f"{ref.id} and {dev.id}; they share {', '.join(common) or 'no axis'}"
         )
     return _checked(
-        Pair(path, _signal(path, ref, chosen), _signal(path, dev, chosen), _digest(path))
+        Pair(path, _signal(path, ref, chosen), _signal(path, dev, chosen), digest(path))
     )
 
 

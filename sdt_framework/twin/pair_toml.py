@@ -24,7 +24,6 @@ array with ``variable``.
 
 from __future__ import annotations
 
-import hashlib
 from pathlib import Path
 from typing import Literal
 
@@ -37,7 +36,7 @@ from ..data.signal_files import read_signal
 from ..data.timebase import on_even_grid
 from ..errors import SDTError
 from ..toml_files import read_toml, validate_file
-from .signals import Pair, Signal
+from .signals import Pair, Signal, digest
 
 __all__ = ["PairSignal", "is_pair_toml", "load_toml_pair"]
 
@@ -123,13 +122,6 @@ def _signal(folder: Path, side: str, spec: PairSignal) -> Signal:
                   even.start_s + spec.start_s, even.note, even.rate_sd_hz)  # fmt: skip
 
 
-def _digest(path: Path, parts: list[Path]) -> str:
-    sha = hashlib.sha256(path.read_bytes())
-    for part in parts:
-        sha.update(part.read_bytes())
-    return sha.hexdigest()[:12]
-
-
 def load_toml_pair(path: str | Path, axes: list[str] | None = None) -> Pair:
     """The pair described by the TOML file at ``path``, on the axes both sides share."""
     path = Path(path)
@@ -154,4 +146,4 @@ def load_toml_pair(path: str | Path, axes: list[str] | None = None) -> Pair:
                       s.note, s.rate_sd_hz)  # fmt: skip
 
     files = [path.parent / parsed.reference.file, path.parent / parsed.device.file]
-    return Pair(str(path), pick(ref), pick(dev), _digest(path, files))
+    return Pair(str(path), pick(ref), pick(dev), digest(path, *files))

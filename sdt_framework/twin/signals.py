@@ -1,13 +1,15 @@
-"""The two signals of a paired recording, and the pair: data only, read by :mod:`.pair`."""
+"""The two signals of a paired recording, the pair, and the digest that names its files."""
 
 from __future__ import annotations
 
+import hashlib
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-__all__ = ["Pair", "Signal"]
+__all__ = ["Pair", "Signal", "digest"]
 
 
 @dataclass(frozen=True)
@@ -42,3 +44,14 @@ class Pair:
     def name(self) -> str:
         """The file's name."""
         return Path(self.path).name
+
+
+def digest(*paths: str | os.PathLike[str]) -> str:
+    """First 12 hex digits of the SHA-256 of the files' bytes, in order (names a pair's data
+    in a fitted profile's provenance)."""
+    sha = hashlib.sha256()
+    for path in paths:
+        with open(path, "rb") as handle:
+            for block in iter(lambda: handle.read(1 << 20), b""):
+                sha.update(block)
+    return sha.hexdigest()[:12]
