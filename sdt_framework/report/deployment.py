@@ -130,10 +130,9 @@ def _node_bytes(folder: ResultsFolder, registry: Any) -> str:
         spec = resolve_feature_set(registry, config.features if config else "paper8")
     except SDTError:
         return "three axes' feature vectors"
-    dtype = (config.feature_dtype if config else None) or spec.dtype
-    size = np.dtype(dtype).itemsize
-    n = len(spec.feature_names)
-    return f"3 x {n} values at {dtype}: {3 * n * size} B"
+    if config is not None and config.feature_dtype:
+        spec = spec.with_dtype(config.feature_dtype)
+    return f"3 x {len(spec.feature_names)} values at {spec.dtype}: {3 * spec.bytes_per_window} B"
 
 
 def deployment_blocks(folder: ResultsFolder, registry: Any) -> list[Block]:
