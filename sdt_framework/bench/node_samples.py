@@ -134,10 +134,9 @@ def node_frame(features: pd.DataFrame, node: Node, names: Sequence[str]) -> pd.D
     values = values.sort_index().reset_index()
     first = part[part["channel"] == node.channels[0]]
     meta = first.drop_duplicates(["machine", "run"]).set_index(["machine", "run"])
-    runs = pd.MultiIndex.from_frame(values[["machine", "run"]])
-    values.insert(2, "condition", meta["condition"].reindex(runs).to_numpy())
-    values.insert(3, "severity", meta["severity"].reindex(runs).to_numpy())
-    ids = first.drop_duplicates(["machine", "run"]).set_index(["machine", "run"])["recording_id"]
-    values.insert(4, "recording_id", [f"{r}@{node.name}" for r in ids.reindex(runs)])
+    meta = meta.reindex(pd.MultiIndex.from_frame(values[["machine", "run"]]))
+    values.insert(2, "condition", meta["condition"].to_numpy())
+    values.insert(3, "severity", meta["severity"].to_numpy())
+    values.insert(4, "recording_id", [f"{r}@{node.name}" for r in meta["recording_id"]])
     values["severity"] = values["severity"].astype("Int64")
     return values
