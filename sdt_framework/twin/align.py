@@ -61,6 +61,7 @@ class Alignment:
     device: np.ndarray  # device samples over the overlap
     reference: np.ndarray  # reference samples over the overlap (its own rate)
     correlation: float = 1.0  # best of the main twin axis with any device axis
+    rotation_estimated: bool = True  # False: no axis carried shared motion, axes as mounted
 
     @property
     def signs(self) -> list[int]:
@@ -174,4 +175,5 @@ def align(pair: Pair, sensor: SensorSpec, seed: int = 0) -> Alignment:
     ref_t = ref.start_s + np.arange(ref.values.shape[1]) / ref.rate_hz
     reference = ref.values[:, (ref_t >= start - delay) & (ref_t <= end - delay)]
     return Alignment(dev.rate_hz, float(sensor.sampling_rate_hz), delay, rotation,
-                     rotation @ shifted, device, reference, correlation)  # fmt: skip
+                     rotation @ shifted, device, reference, correlation,
+                     bool(len(active)))  # fmt: skip

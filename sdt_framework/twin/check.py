@@ -42,7 +42,7 @@ from scipy import signal
 from ..errors import SDTError
 from ..specs import SensorSpec
 from . import spectra
-from .align import MIN_CORRELATION, Alignment, align
+from .align import Alignment, align
 from .pair import Pair
 
 __all__ = [
@@ -236,7 +236,7 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             "angles_deg": a.angles_deg,
             "rotation": a.rotation.round(6).tolist(),
             "correlation": a.correlation,
-            "rotation_estimated": bool(a.correlation >= MIN_CORRELATION),
+            "rotation_estimated": a.rotation_estimated,
         },
         bands=rows,
         floors=[
