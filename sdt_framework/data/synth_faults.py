@@ -122,6 +122,8 @@ IMPACTS: dict[str, tuple[str, Bearing | None, str | float, float]] = {
 IMPACT_STEPS: dict[str, tuple[float, ...]] = {
     "bearing pump": (3.0, 3.3, 3.6),
     "coupling": (2.5, 3.0, 3.5),
+    "bearing bpfo": (1.5, 2.25, 3.0),
+    "bearing bpfi": (1.5, 2.25, 3.0),
 }
 BEARING_SLIP = 0.01  # relative SD of the interval between bearing impacts
 KNOCK_SCATTER = 0.2  # relative SD of one shaft-locked knock's strength (coupling, impeller)
