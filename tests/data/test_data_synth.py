@@ -118,6 +118,25 @@ def test_bearing_envelope_spectrum_peaks_at_defect_frequency(run: str, multiplie
 
 
 @pytest.mark.usefixtures("no_scatter")
+@pytest.mark.parametrize("condition", ["bearing bpfo", "bearing bpfi"])
+def test_motor_bearing_defect_is_present_from_level_1_and_doubles_by_level_3(
+    monkeypatch: pytest.MonkeyPatch, condition: str
+) -> None:
+    # seeded defects: the impact train at level 1 is half its level-3 size (docs/data.md),
+    # so the kHz band, with flow and sensor noise off, carries only the impacts and its
+    # RMS grows by 1.5 from level 1 to 2 and by 2 from level 1 to 3, whatever the slip
+    monkeypatch.setattr(model, "FLOW_NOISE_G", 0.0)
+    monkeypatch.setattr(model, "SENSOR_NOISE_G", 0.0)
+    khz = [
+        band_rms(gen("Motor-2", condition, k, ["ch2"], 2.0)["ch2"][0], 1000, 9000)
+        for k in (1, 2, 3)
+    ]
+    assert khz[0] > 0.05  # a defect at level 1, not a healthy bearing
+    assert khz[1] / khz[0] == pytest.approx(1.5, rel=0.05)
+    assert khz[2] / khz[0] == pytest.approx(2.0, rel=0.05)
+
+
+@pytest.mark.usefixtures("no_scatter")
 def test_unbalance_1x_is_the_vector_sum_of_residual_and_added_unbalance() -> None:
     # |R + s F|^2 = |R|^2 + 2 s Re(R F*) + s^2 |F|^2: exactly quadratic in the added
     # unbalance s (the model's effective size of each level; s = 0: the healthy run,
