@@ -34,6 +34,7 @@ from sdt_framework.bench.config import load_config
 from sdt_framework.bench.plan import plan_benchmark
 from sdt_framework.bench.results import tidy
 from sdt_framework.bench.runner import run_benchmark
+from sdt_framework.errors import SDTError
 from sdt_framework.registry import build_registry
 
 REFERENCE = "wilcoxon-786b10"
@@ -175,11 +176,21 @@ CHECKS = {
 }
 
 
+def at_least_one(text: str) -> int:
+    """An argparse type: an integer >= 1 (a count of seeds or repetitions)."""
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
+    return value
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--seeds", type=int, default=5, help="generator seeds 0..N-1 (default 5)")
+    parser.add_argument(
+        "--seeds", type=at_least_one, default=5, help="generator seeds 0..N-1 (default 5)"
+    )
     parser.add_argument("--quick", action="store_true", help="LR, kNN, XGB, one repetition")
-    parser.add_argument("--repeats", type=int, default=2, help="repetitions (default 2)")
+    parser.add_argument("--repeats", type=at_least_one, default=2, help="repetitions (default 2)")
     parser.add_argument("--jobs", type=int, default=2, help="processes (default 2)")
     parser.add_argument(
         "--channels", action="store_true", help="also LR on each channel alone (seed 0)"
@@ -192,7 +203,12 @@ def main() -> None:
     with tempfile.TemporaryDirectory(prefix="calibrate_pump_") as tmp:
         for seed in range(args.seeds):
             where = Path(tmp)
-            results, per_class, confusion = run_seed(seed, classifiers, repeats, args.jobs, where)
+            try:
+                results, per_class, confusion = run_seed(
+                    seed, classifiers, repeats, args.jobs, where
+                )
+            except SDTError as exc:
+                parser.error(str(exc))
             mean = results.groupby(["machine", "scenario"])["macro_f1"].mean()
             scores.append(mean.rename(seed))
             by_model = results.groupby(["machine", "scenario", "classifier"])["macro_f1"].mean()
