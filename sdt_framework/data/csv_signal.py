@@ -33,6 +33,7 @@ from __future__ import annotations
 import os
 import re
 import warnings
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -153,7 +154,9 @@ def _parse(path: Path, skip: int, labels: list[str], start: int) -> NDArray[np.f
     return matrix
 
 
-def read_csv_signal(path: str | os.PathLike[str], variable: str | None = None) -> CsvSignal:
+def read_csv_signal(
+    path: str | os.PathLike[str], variable: str | Sequence[str] | None = None
+) -> CsvSignal:
     """Read a CSV signal file by the module's rule.
 
     Parameters
@@ -161,7 +164,8 @@ def read_csv_signal(path: str | os.PathLike[str], variable: str | None = None) -
     path
         The CSV file.
     variable
-        A header name: read only that column (no time detection).
+        A header name, or several: read only those columns, in that order (no
+        time detection), from one pass over the file.
 
     Returns
     -------
@@ -230,12 +234,17 @@ def read_csv_signal(path: str | os.PathLike[str], variable: str | None = None) -
 
 
 def _select(
-    path: Path, series: NDArray[np.float64], names: tuple[str, ...] | None, variable: str
+    path: Path,
+    series: NDArray[np.float64],
+    names: tuple[str, ...] | None,
+    variable: str | Sequence[str],
 ) -> CsvSignal:
+    wanted = (variable,) if isinstance(variable, str) else tuple(variable)
     if names is None:
-        raise DataFileError(f"{path}: no header line, so column {quote(variable)} cannot be found")
-    if variable not in names:
-        shown = ", ".join(quote(n) for n in names[:8]) + (", ..." if len(names) > 8 else "")
-        raise DataFileError(f"{path}: no column {quote(variable)}; the header has {shown}")
-    index = names.index(variable)
-    return CsvSignal(np.ascontiguousarray(series[index : index + 1]), (variable,), None)
+        raise DataFileError(f"{path}: no header line, so column {quote(wanted[0])} cannot be found")
+    for name in wanted:
+        if name not in names:
+            shown = ", ".join(quote(n) for n in names[:8]) + (", ..." if len(names) > 8 else "")
+            raise DataFileError(f"{path}: no column {quote(name)}; the header has {shown}")
+    index = [names.index(name) for name in wanted]
+    return CsvSignal(np.ascontiguousarray(series[index]), wanted, None)

@@ -90,13 +90,17 @@ def _samples(folder: Path, side: str, spec: PairSignal) -> tuple[np.ndarray, np.
     file = folder / spec.file
     if not file.is_file():
         raise SDTError(f"{file}: [{side}] file not found; paths are relative to the pair file")
-    if spec.columns is not None:
-        values = np.concatenate([read_csv_signal(file, c).data for c in spec.columns])
+    times = None
+    if spec.columns is not None:  # the signal columns and the time column in one read
+        extra = [] if spec.time_column is None else [spec.time_column]
+        table = read_csv_signal(file, [*spec.columns, *extra]).data
+        values = table[: len(spec.columns)]
+        if extra:
+            times = table[-1]
     else:
         values = read_signal(file, spec.variable)
-    times = None
-    if spec.time_column is not None:
-        times = read_csv_signal(file, spec.time_column).data[0]
+        if spec.time_column is not None:
+            times = read_csv_signal(file, spec.time_column).data[0]
     if values.shape[0] != len(spec.axes):
         raise SDTError(
             f"{file}: [{side}] holds {values.shape[0]} signal(s) for axes {spec.axes}; "

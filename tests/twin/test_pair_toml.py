@@ -101,3 +101,23 @@ def test_a_pair_without_motion_says_why_nothing_is_judged(tmp_path, sdt_main):
     assert code == 2, err
     lines = err.strip().splitlines()
     assert len(lines) == 1 and "no band can be judged" in lines[0] and "floor" in lines[0], err
+
+
+def test_the_reference_csv_is_read_once_for_its_columns_and_time(written, monkeypatch):
+    # three signal columns and a time column: one parse of the file, not four
+    from sdt_framework.data import csv_signal
+
+    parsed: list[Path] = []
+    real = csv_signal._parse
+
+    def counting(path, *args):
+        parsed.append(path)
+        return real(path, *args)
+
+    monkeypatch.setattr(csv_signal, "_parse", counting)
+    _, folder = written
+    pair = load_pair(folder / "pair.toml", "adxl345")
+    assert [p.name for p in parsed] == ["piezo.csv"]
+    # the columns come back in the order the pair names them, against numpy's own read
+    table = np.loadtxt(folder / "piezo.csv", delimiter=",", skiprows=1)
+    assert np.allclose(pair.reference.values * G, table[:, [2, 3, 1]].T, rtol=1e-9, atol=1e-12)
