@@ -240,6 +240,8 @@ def _select(
     variable: str | Sequence[str],
 ) -> CsvSignal:
     wanted = (variable,) if isinstance(variable, str) else tuple(variable)
+    if not wanted:
+        raise DataFileError(f"{path}: no column named to read; give at least one header name")
     if names is None:
         raise DataFileError(f"{path}: no header line, so column {quote(wanted[0])} cannot be found")
     for name in wanted:
