@@ -14,7 +14,7 @@ import os
 from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
 from ..errors import SDTError
 from .pair_toml import is_pair_toml, load_toml_pair
-from .signals import Pair, Signal, digest
+from .signals import Pair, Signal, chosen_axes, digest
 
 __all__ = ["Pair", "Signal", "load_pair"]
 
@@ -75,15 +75,13 @@ def load_pair(
         )
     channels = accelerometers(inspect_ide(path))
     ref, dev = _pick(path, channels, sensor, device_channel, reference_channel)
-    common = [a for a in "xyz" if {a} <= {s.axis for s in ref.subchannels} & {
-        s.axis for s in dev.subchannels}]  # fmt: skip
-    chosen = axes or common
-    missing = [a for a in chosen if a not in common]
-    if missing or not chosen:
-        raise SDTError(
-            f"{path}: axis {missing[0] if missing else '-'!r} is not on both channels "
-            f"{ref.id} and {dev.id}; they share {', '.join(common) or 'no axis'}"
-        )
+    chosen = chosen_axes(
+        path,
+        [s.axis for s in ref.subchannels],
+        [s.axis for s in dev.subchannels],
+        axes,
+        f"both channels {ref.id} and {dev.id}",
+    )
     return _checked(
         Pair(path, _signal(path, ref, chosen), _signal(path, dev, chosen), digest(path))
     )

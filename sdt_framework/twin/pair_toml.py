@@ -36,7 +36,7 @@ from ..data.signal_files import read_signal
 from ..data.timebase import on_even_grid
 from ..errors import SDTError
 from ..toml_files import read_toml, validate_file
-from .signals import Pair, Signal, digest
+from .signals import Pair, Signal, chosen_axes, digest
 
 __all__ = ["PairSignal", "is_pair_toml", "load_toml_pair"]
 
@@ -135,14 +135,7 @@ def load_toml_pair(path: str | Path, axes: list[str] | None = None) -> Pair:
         dev = _signal(path.parent, "device", parsed.device)
     except DataFileError as exc:
         raise SDTError(str(exc)) from None
-    common = [a for a in "xyz" if a in ref.axes and a in dev.axes]
-    chosen = axes or common
-    missing = [a for a in chosen if a not in common]
-    if missing or not chosen:
-        raise SDTError(
-            f"{path}: axis {missing[0] if missing else '-'!r} is not on both signals; "
-            f"they share {', '.join(common) or 'no axis'}"
-        )
+    chosen = chosen_axes(path, ref.axes, dev.axes, axes, "both signals")
 
     def pick(s: Signal) -> Signal:
         rows = [s.axes.index(a) for a in chosen]

@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import hashlib
 import os
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
+from ..errors import SDTError
 
 __all__ = ["Pair", "Signal", "digest"]
 
@@ -55,3 +58,28 @@ def digest(*paths: str | os.PathLike[str]) -> str:
             for block in iter(lambda: handle.read(1 << 20), b""):
                 sha.update(block)
     return sha.hexdigest()[:12]
+
+
+def chosen_axes(
+    path: str | os.PathLike[str],
+    reference: Iterable[str],
+    device: Iterable[str],
+    axes: list[str] | None,
+    between: str,
+) -> list[str]:
+    """The axes to compare: ``axes`` (default: every axis both sides carry), in x, y, z order.
+
+    ``between`` names the two sides in the error (``"both signals"``, ``"both
+    channels 32 and 80"``) when an asked axis is missing on one of them or
+    they share none.
+    """
+    both = set(reference) & set(device)
+    common = [a for a in "xyz" if a in both]
+    chosen = axes or common
+    missing = [a for a in chosen if a not in common]
+    if missing or not chosen:
+        raise SDTError(
+            f"{path}: axis {missing[0] if missing else '-'!r} is not on {between}; "
+            f"they share {', '.join(common) or 'no axis'}"
+        )
+    return chosen
