@@ -63,3 +63,12 @@ def test_importing_the_package_loads_no_heavy_dependency() -> None:
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"
+
+
+def test_every_public_name_of_the_lazy_package_root_resolves() -> None:
+    # the names the package lists and the names it loads on first use are the same set
+    import sdt_framework
+
+    assert set(sdt_framework.__all__) == {*sdt_framework._SOURCES, "__version__"}
+    for name in sdt_framework.__all__:
+        assert getattr(sdt_framework, name) is not None
