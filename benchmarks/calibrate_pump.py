@@ -23,6 +23,7 @@ on 2 cores. Not part of ``make test``.
 from __future__ import annotations
 
 import argparse
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -272,4 +273,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except KeyboardInterrupt:  # nothing is kept: every run lives in a temporary folder
+        print("interrupted: stopped by Ctrl-C; nothing was written, run it again", file=sys.stderr)
+        sys.exit(130)
