@@ -33,19 +33,24 @@ def degrade_command(
     continuous acquisition). The output keeps that shape convention. A CSV is
     read as a manifest's CSV is: a header line is skipped, a time column is
     dropped (with a note), and the longer axis is time, so a `time,acc` file is
-    one acquisition. --out may not be INPUT itself.
+    one acquisition. --out may not be INPUT itself. A file whose samples (read
+    from its header) cannot fit in the memory available is refused before it
+    is read.
 
     Example:
 
       sdt degrade pump.npy --sensor adxl345 --fs 20000 --seed 0 --out pump_adxl345.npy
     """
     from ..chain import degrade  # scipy.signal: imported on use so `sdt --help` starts fast
+    from ..data.signal_sizes import DEGRADE_BYTES_PER_SAMPLE
     from .guards import check_output_file, os_errors
-    from .signal_io import SUFFIXES, load_signal, save_array
+    from .signal_io import SUFFIXES, check_signal_size, load_signal, save_array
 
     with os_errors():
         spec = registry(ctx).sensor(sensor)
         check_output_file(out, "--out", SUFFIXES, inputs=[input_path])
+        split = "split it into shorter files (rows of a 2-D .npy one file at a time, with "
+        check_signal_size(input_path, DEGRADE_BYTES_PER_SAMPLE, split + "--first-index)")
         x, note = load_signal(input_path)
         _note(note)
         y, fs_out = degrade(

@@ -99,14 +99,18 @@ def extract_features(
 
     Units travel with the values: a CSV feature column is headed 'name\\[unit]'
     (V_RMS\\[mm/s]); a Parquet feature column carries 'unit' field metadata.
-    --out may not be INPUT (nor a link to it); its folder is checked first.
+    --out may not be INPUT (nor a link to it); its folder is checked first. A
+    file whose samples (from its header) cannot fit in the memory available is
+    refused before it is read.
 
     Example:
 
       sdt features extract adxl345.npy --fs 3200 --set paper8 --out features.parquet
     """
+    from ..data.signal_sizes import FEATURES_BYTES_PER_SAMPLE
     from ..features import extract, resolve_feature_set, write_feature_table
     from .guards import check_output_file, os_errors
+    from .signal_io import check_signal_size
 
     for option, seconds in (("--window-s", window_s), ("--settle-s", settle_s)):
         if not math.isfinite(seconds):
@@ -116,6 +120,9 @@ def extract_features(
         raise SDTError(f"{out}: --out must end in .csv or .parquet")
     with os_errors():
         check_output_file(out, "--out", (".csv", ".parquet"), inputs=[input_path])
+        advice = "split it into shorter files (rows of a 2-D .npy a few at a time)"
+        if input_path.suffix.lower() == ".npy":
+            check_signal_size(input_path, FEATURES_BYTES_PER_SAMPLE, advice)
         signal = _load_npy(input_path)
         result = extract(
             signal, fs, spec, window_s=window_s, settle_s=settle_s, label=str(input_path)

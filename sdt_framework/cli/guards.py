@@ -10,6 +10,8 @@
   half-written temporary file.
 - :func:`check_cost`: a size that cannot fit in this machine's memory (or
   disk) is refused; one that is large or long needs ``--yes``.
+- :func:`check_memory`: one input file whose samples cannot fit in the memory
+  available is refused before it is read.
 """
 
 from __future__ import annotations
@@ -33,6 +35,7 @@ __all__ = [
     "LONG_SECONDS",
     "MEMORY_SHARE",
     "check_cost",
+    "check_memory",
     "check_output_file",
     "check_output_folder",
     "describe_os_error",
@@ -180,4 +183,18 @@ def check_cost(what: str, cost: Cost, yes: bool, reduce: str, folder: Path | Non
         raise SDTError(
             f"{what}: {size}, estimated {human_seconds(seconds)}; "
             f"pass --yes to run it, or reduce {reduce}"
+        )
+
+
+def check_memory(path: Path, size: str, memory: int, advice: str) -> None:
+    """Refuse ``path`` before reading it when its ``size`` ("N samples") needs more
+    ``memory`` (bytes) than is available now (memory, cgroup and ``ulimit -v`` limits);
+    ``advice`` says what to do instead."""
+    from ..data.sizes import available_memory, human_bytes
+
+    room = available_memory()
+    if memory > room:
+        raise SDTError(
+            f"{path}: {size} need about {human_bytes(memory)} of memory, more than "
+            f"the {human_bytes(room)} available; {advice}"
         )

@@ -9,6 +9,10 @@ A single series is returned 1-D. An NPY array is taken as stored (1-D, or
 rows = acquisitions). Writes are atomic (:mod:`sdt_framework.io`); CSV values
 use ``%.17g`` so a float64 survives the round trip exactly. Every failure is a
 one-line :class:`~sdt_framework.errors.SDTError` naming the path.
+
+Before reading, :func:`check_signal_size` and :func:`check_pair_size` size the
+job from the files' headers (:mod:`sdt_framework.data.signal_sizes`) and
+refuse one that cannot fit in the memory available.
 """
 
 from __future__ import annotations
@@ -24,7 +28,16 @@ from ..errors import SDTError
 from ..inputs import require_regular_file
 from ..io import atomic_path
 
-__all__ = ["SUFFIXES", "UNITS", "LoadedSignal", "load_signal", "save_array", "to_g"]
+__all__ = [
+    "SUFFIXES",
+    "UNITS",
+    "LoadedSignal",
+    "check_pair_size",
+    "check_signal_size",
+    "load_signal",
+    "save_array",
+    "to_g",
+]
 
 SUFFIXES = (".npy", ".csv")
 UNITS = ("g", "mg", "lsb")
@@ -91,3 +104,46 @@ def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> 
             raise SDTError(f"{label}: --unit lsb needs --scale G_PER_LSB > 0, got {scale}")
         return x * scale
     raise SDTError(f"{label}: unknown unit {unit!r}; use one of {', '.join(UNITS)}")
+
+
+def check_signal_size(path: Path, bytes_per_sample: int, advice: str) -> None:
+    """Refuse the signal file ``path`` before reading it if its samples (from its header)
+    at ``bytes_per_sample`` each need more memory than is available."""
+    from ..data.signal_sizes import CSV_PARSE_BYTES_PER_SAMPLE, file_samples
+    from .guards import check_memory
+
+    samples = file_samples(path)
+    if samples is not None:
+        if path.suffix.lower() == ".csv":
+            bytes_per_sample += CSV_PARSE_BYTES_PER_SAMPLE
+        check_memory(path, f"{samples:,} samples", samples * bytes_per_sample, advice)
+
+
+def check_pair_size(pair: Path) -> None:
+    """Refuse a paired recording (TOML pair or IDE file) that ``sdt twin check`` cannot hold.
+
+    A TOML pair is sized from its two files' headers, an IDE file from its
+    bytes; a pair that cannot be read this way is left to the loader's message.
+    """
+    from ..data.signal_sizes import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
+    from .guards import check_memory
+
+    advice = "cut the recordings to a shorter stretch (a few minutes hold every band)"
+    try:
+        if pair.suffix.lower() != ".toml":
+            size = pair.stat().st_size if pair.is_file() else 0
+            check_memory(
+                pair, f"{size:,} bytes of recording", size * TWIN_BYTES_PER_IDE_BYTE, advice
+            )
+            return
+        import tomllib
+
+        tables = tomllib.loads(pair.read_text(encoding="utf-8"))
+        sides = [tables.get(side) for side in ("reference", "device")]
+        files = [(pair.parent / s["file"], s.get("variable")) for s in sides]
+    except (OSError, UnicodeError, ValueError, TypeError, KeyError):
+        return  # the loader says what is wrong with the file
+    counts = [file_samples(file, variable) for file, variable in files]
+    if None not in counts:
+        samples = sum(c for c in counts if c is not None)
+        check_memory(pair, f"{samples:,} samples", samples * TWIN_BYTES_PER_SAMPLE, advice)

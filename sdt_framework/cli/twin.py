@@ -86,9 +86,11 @@ def check(
     from ..twin.plot import plot_check
     from ..validation.noise_plot import plot_formats
     from .guards import check_output_file
+    from .signal_io import check_pair_size
 
     if plot is not None:
         check_output_file(plot, "--plot", [f".{f}" for f in plot_formats()], [pair])
+    check_pair_size(pair)  # from the files' headers, before reading them
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel,
                          reference_scale)  # fmt: skip
     result = check_twin(loaded, spec)

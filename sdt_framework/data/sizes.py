@@ -109,8 +109,32 @@ def _cgroup_room() -> int | None:
     return None if limit == "max" else max(0, int(limit) - used)
 
 
+def _address_space_room() -> int | None:
+    """Bytes left under this process's address-space limit (``ulimit -v``), None if unlimited.
+
+    The limit caps the process's virtual size (``VmSize``), so what is left is
+    the limit less that size: an allocation above it fails with MemoryError
+    however much memory the machine has free.
+    """
+    try:
+        import resource
+    except ImportError:  # not POSIX
+        return None
+    soft = resource.getrlimit(resource.RLIMIT_AS)[0]
+    if soft == resource.RLIM_INFINITY:
+        return None
+    try:
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith("VmSize:"):
+                return max(0, soft - int(line.split()[1]) * 1024)
+    except (OSError, ValueError, IndexError):
+        pass
+    return soft
+
+
 def available_memory() -> int:
-    """Bytes of memory a new allocation can use now (``MemAvailable``, cgroup limit)."""
+    """Bytes of memory a new allocation can use now (``MemAvailable``, cgroup limit,
+    address-space limit)."""
     room = None
     try:
         for line in Path("/proc/meminfo").read_text().splitlines():
@@ -123,8 +147,8 @@ def available_memory() -> int:
             room = os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
         except (ValueError, OSError, AttributeError):
             room = 2**63 - 1  # unknown: do not refuse on a guess
-    cgroup = _cgroup_room()
-    return room if cgroup is None else min(room, cgroup)
+    limits = [x for x in (_cgroup_room(), _address_space_room()) if x is not None]
+    return min([room, *limits])
 
 
 def free_disk(path: Path) -> int:
