@@ -9,6 +9,7 @@ import typer
 
 from ..errors import SDTError
 from .common import console, err_console, print_json, print_table, registry
+from .guards import OVERWRITE_HELP
 
 __all__ = ["degrade_command", "validate_noise_command"]
 
@@ -26,6 +27,7 @@ def degrade_command(
     first_index: Annotated[
         int, typer.Option("--first-index", help="Noise id of the first row.")
     ] = 0,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help=OVERWRITE_HELP)] = False,
 ) -> None:
     """Degrade a recording to what SENSOR would have recorded (SPEC section 2).
 
@@ -33,7 +35,8 @@ def degrade_command(
     continuous acquisition). The output keeps that shape convention. A CSV is
     read as a manifest's CSV is: a header line is skipped, a time column is
     dropped (with a note), and the longer axis is time, so a `time,acc` file is
-    one acquisition. --out may not be INPUT itself. A file whose samples (read
+    one acquisition. --out may not be INPUT itself, nor an existing file
+    unless --overwrite is given. A file whose samples (read
     from its header) cannot fit in the memory available is refused before it
     is read.
 
@@ -48,7 +51,7 @@ def degrade_command(
 
     with os_errors():
         spec = registry(ctx).sensor(sensor)
-        check_output_file(out, "--out", SUFFIXES, inputs=[input_path])
+        check_output_file(out, "--out", SUFFIXES, inputs=[input_path], overwrite=overwrite)
         split = "split it into shorter files (rows of a 2-D .npy one file at a time, with "
         check_signal_size(input_path, DEGRADE_BYTES_PER_SAMPLE, split + "--first-index)")
         x, note = load_signal(input_path)
@@ -144,6 +147,7 @@ def validate_noise_command(
             help="Save trace, ASD and Allan deviation here (.png, .pdf, .svg, ...; checked first).",
         ),
     ] = None,
+    overwrite: bool = typer.Option(False, "--overwrite", help=OVERWRITE_HELP),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
     yes: bool = typer.Option(
         False,
@@ -195,7 +199,8 @@ def validate_noise_command(
         spec = spec.for_axis(axis)
         if plot is not None:
             inputs = [recording] if recording is not None else []
-            check_output_file(plot, "--plot", [f".{f}" for f in plot_formats()], inputs)
+            formats = [f".{f}" for f in plot_formats()]
+            check_output_file(plot, "--plot", formats, inputs, overwrite=overwrite)
         n_in, peak, seconds = zero_motion_cost(spec, reference_fs, windows, window_length)
         check_cost(
             f"validate-noise --windows {windows} --window-length {window_length}",

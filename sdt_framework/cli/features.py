@@ -10,6 +10,7 @@ import typer
 
 from ..errors import SDTError
 from .common import console, print_json, registry, table
+from .guards import OVERWRITE_HELP
 
 app = typer.Typer(help="List feature sets and extract features.", no_args_is_help=True)
 
@@ -94,12 +95,14 @@ def extract_features(
     settle_s: Annotated[
         float, typer.Option("--settle-s", help="Settling discard per acquisition, s.")
     ] = 0.1,
+    overwrite: Annotated[bool, typer.Option("--overwrite", help=OVERWRITE_HELP)] = False,
 ) -> None:
     """Extract features: one row per window, with acquisition and window index.
 
     Units travel with the values: a CSV feature column is headed 'name\\[unit]'
     (V_RMS\\[mm/s]); a Parquet feature column carries 'unit' field metadata.
-    --out may not be INPUT (nor a link to it); its folder is checked first. A
+    --out may not be INPUT (nor a link to it), nor an existing file unless
+    --overwrite is given; its folder is checked first. A
     file whose samples (from its header) cannot fit in the memory available is
     refused before it is read.
 
@@ -119,7 +122,9 @@ def extract_features(
     if out.suffix.lower() not in {".csv", ".parquet"}:
         raise SDTError(f"{out}: --out must end in .csv or .parquet")
     with os_errors():
-        check_output_file(out, "--out", (".csv", ".parquet"), inputs=[input_path])
+        check_output_file(
+            out, "--out", (".csv", ".parquet"), inputs=[input_path], overwrite=overwrite
+        )
         advice = "split it into shorter files (rows of a 2-D .npy a few at a time)"
         if input_path.suffix.lower() == ".npy":
             check_signal_size(input_path, FEATURES_BYTES_PER_SAMPLE, advice)

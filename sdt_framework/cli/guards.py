@@ -12,6 +12,13 @@
   disk) is refused; one that is large or long needs ``--yes``.
 - :func:`check_memory`: one input file whose samples cannot fit in the memory
   available is refused before it is read.
+
+The overwrite rule, one for every command that writes a file the user names
+(``degrade --out``, ``features extract --out``, ``validate-noise --plot``,
+``twin check --plot``, ``twin fit --out``): an existing file is refused,
+naming it, unless ``--overwrite`` is given (the flag of ``sdt dataset
+synth``, :data:`OVERWRITE_HELP`); an input file is never an output,
+``--overwrite`` or not.
 """
 
 from __future__ import annotations
@@ -34,6 +41,7 @@ __all__ = [
     "DISK_SHARE",
     "LONG_SECONDS",
     "MEMORY_SHARE",
+    "OVERWRITE_HELP",
     "check_cost",
     "check_memory",
     "check_output_file",
@@ -48,6 +56,8 @@ LONG_SECONDS = 600.0
 #: above this share of the available memory (or free disk) a command asks for --yes
 MEMORY_SHARE = 0.5
 DISK_SHARE = 0.5
+#: the help of every command's ``--overwrite`` (the overwrite rule above)
+OVERWRITE_HELP = "Replace the output file if it exists (an input file is never replaced)."
 
 _ADVICE = {
     errno.ENOENT: "check the path",
@@ -115,9 +125,14 @@ def _probe_folder(folder: Path, option: str, path: Path) -> None:
 
 
 def check_output_file(
-    path: Path, option: str, suffixes: Sequence[str], inputs: Sequence[Path] = ()
+    path: Path,
+    option: str,
+    suffixes: Sequence[str],
+    inputs: Sequence[Path] = (),
+    *,
+    overwrite: bool,
 ) -> None:
-    """Refuse an output file path before any work is done.
+    """Refuse an output file path before any work is done (the overwrite rule above).
 
     Parameters
     ----------
@@ -129,6 +144,8 @@ def check_output_file(
         Extensions offered, with the dot (``.npy``).
     inputs
         Files the command reads: the output may not be one of them.
+    overwrite
+        The user's ``--overwrite``: without it an existing file is refused.
     """
     if path.is_dir():
         example = path / f"out{suffixes[0]}"
@@ -145,6 +162,10 @@ def check_output_file(
                 f"{option} {path} is the input file {source}; write to another path "
                 f"(an input is never overwritten)"
             )
+    if not overwrite and os.path.lexists(path):
+        raise SDTError(
+            f"{option} {path} exists; choose a new file, or pass --overwrite to replace it"
+        )
     _probe_folder(path.parent, option, path)
 
 

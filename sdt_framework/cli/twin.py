@@ -9,7 +9,7 @@ import typer
 
 from ..errors import SDTError
 from .common import console, print_json, registry, table
-from .guards import os_errors
+from .guards import OVERWRITE_HELP, os_errors
 
 app = typer.Typer(help="The twin against real hardware: check and fit.", no_args_is_help=True)
 
@@ -66,6 +66,7 @@ def check(
         None, "--plot", help="Save the spectra and transfer figure here (.png, .pdf, .svg)."
     ),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
+    overwrite: bool = typer.Option(False, "--overwrite", help=OVERWRITE_HELP),
 ) -> None:
     """Run the pair's reference through the twin of --sensor and compare it with the device.
 
@@ -89,7 +90,8 @@ def check(
     from .signal_io import check_pair_size
 
     if plot is not None:
-        check_output_file(plot, "--plot", [f".{f}" for f in plot_formats()], [pair])
+        formats = [f".{f}" for f in plot_formats()]
+        check_output_file(plot, "--plot", formats, [pair], overwrite=overwrite)
     check_pair_size(pair)  # from the files' headers, before reading them
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel,
                          reference_scale)  # fmt: skip
@@ -161,11 +163,12 @@ def fit(
         ..., help="Paired recording: an enDAQ .IDE file, or a pair .toml naming two signals."
     ),
     sensor: str = typer.Option(..., "--sensor", help="Base profile to start from."),
-    out: Path = typer.Option(..., "--out", help="Sensor file to write (.toml, must be new)."),
+    out: Path = typer.Option(..., "--out", help="Sensor file to write (.toml)."),
     name: str | None = typer.Option(None, "--name", help="Profile name (default NAME-fitted)."),
     axes: str | None = _AXES,
     device_channel: int | None = _DEVICE,
     reference_channel: int | None = _REFERENCE,
+    overwrite: bool = typer.Option(False, "--overwrite", help=OVERWRITE_HELP),
 ) -> None:
     """Fit the twin parameters the pair supports; write them as an ordinary sensor file.
 
@@ -184,9 +187,7 @@ def fit(
     from ..twin.fit import fit_twin, profile_toml
     from .guards import check_output_file
 
-    if out.exists():
-        raise SDTError(f"--out {out} exists; choose a new file (nothing is overwritten)")
-    check_output_file(out, "--out", [".toml"], [pair])  # suffix, folder, writable: before work
+    check_output_file(out, "--out", [".toml"], [pair], overwrite=overwrite)  # before work
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel)
     result = fit_twin(loaded, spec, name)
     with os_errors(str(out)):

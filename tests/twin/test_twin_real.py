@@ -101,7 +101,7 @@ def test_check_reports_the_real_devices_band_rms(registry):
         (["twin", "fit", "{data}/SSX66115.IDE", "--sensor", "adxl345", "--out", "{tmp}/f.txt"],
          "unsupported extension '.txt'; use one of .toml"),
         (["twin", "fit", "{data}/SSX66115.IDE", "--sensor", "adxl345", "--out",
-          "{data}/SSX_Data.IDE"], "exists; choose a new file"),
+          "{data}/SSX_Data.IDE"], "unsupported extension '.ide'"),
     ],
 )  # fmt: skip
 def test_bad_input_is_one_line(sdt_main, tmp_path, args, words):
