@@ -115,12 +115,14 @@ def _run(
     no_report: bool,
 ) -> dict[str, Any]:
     """Plan the sweep, check its size and the folder, run it, write and report."""
+    from ..bench.estimate import estimate
     from ..bench.output import write_outputs
     from ..bench.runner import preflight, run_benchmark
     from ..data.sizes import building
     from ..explore.output import write_explore
     from ..explore.run import explore_table, plan_explore
-    from .planned import check_estimate, check_size, print_skipped, stored_runs
+    from ..explore.size import assumptions, run_estimate
+    from .planned import check_estimate, print_skipped, stored_runs
     from .progress import progress_bar
 
     reg = registry(ctx)
@@ -134,7 +136,10 @@ def _run(
 
     explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where, check=check_design)
     plan = explore_plan.plan
-    size = check_size(plan, out_dir, yes, "sweep", reduce, verb="run")
+    report = plan.config.report and not no_report
+    benchmark = estimate(plan, stored_runs=stored)
+    size = run_estimate(plan, benchmark, report)
+    check_estimate(size, out_dir, yes, "sweep", reduce, verb="run")
     preflight(plan, out_dir)
     for row in explore_plan.skipped.itertuples():
         err_console.print(f"skipped point {row.point}: {row.reason}", highlight=False)
@@ -145,6 +150,7 @@ def _run(
         highlight=False,
         soft_wrap=True,
     )
+    console.print(f"  ({assumptions(plan, benchmark, report)})", highlight=False, soft_wrap=True)
     smaller = (
         "use fewer points, repeats or classifiers, shorter or fewer recordings, or fewer --jobs"
     )
@@ -152,7 +158,7 @@ def _run(
         result = run_benchmark(plan, out_dir, progress, warn)
         results = write_outputs(result, out_dir)
         tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
-    if plan.config.report and not no_report:
+    if report:
         from ..report import write_report
 
         write_report(out_dir, registry=reg)

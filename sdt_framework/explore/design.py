@@ -28,7 +28,7 @@ from .designs import DESIGNS
 from .size import design_size
 from .sweep import INTEGER_FIELDS, Axis, Sweep, axis_levels
 
-__all__ = ["design_points", "unit_column"]
+__all__ = ["design_points", "repeated_point", "unit_column"]
 
 
 def unit_column(field: str) -> str:
@@ -84,3 +84,29 @@ def _design_points(sweep: Sweep) -> pd.DataFrame:
             frame[f] = frame[f].round().astype(int)
     frame.insert(0, "design_index", np.arange(len(frame)))
     return frame
+
+
+def repeated_point(sweep: Sweep, design: pd.DataFrame) -> str | None:
+    """Why two design points are one sensor (same values once mapped and rounded), or None.
+
+    Two equal points would be one sensor under one name, which the benchmark
+    cannot list twice; a design needs distinct points.
+    """
+    fields = list(sweep.axes)
+    repeated = design.duplicated(fields, keep=False).to_numpy()
+    if not repeated.any():
+        return None
+    first = design[repeated].iloc[0]
+    same = design[repeated & (design[fields] == first[fields]).all(axis=1).to_numpy()]
+    i, j = (int(k) for k in same["design_index"].iloc[:2])
+    values = ", ".join(f"{f} = {first[f]:g}" for f in fields)
+    rounded = [f for f in fields if f in INTEGER_FIELDS or sweep.axes[f].levels is not None]
+    how = f" once mapped to {', '.join(rounded)}'s whole numbers or levels" if rounded else ""
+    same_point = f"design points {i} and {j} are the same point ({values}){how}"
+    if sweep.design == "grid":
+        return f"{same_point}; give levels that stay distinct"
+    advice = {"morris": "lower samples (its trajectories revisit the grid), or raise levels"}
+    return (
+        f"{same_point}: the {sweep.design} design with samples = {sweep.samples} repeats it; "
+        f"{advice.get(sweep.design, 'change samples, or widen the ranges')}"
+    )

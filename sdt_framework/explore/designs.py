@@ -59,6 +59,10 @@ class Design:
     indices: Mapping[str, str | None] | None = None  # index -> its CI half-width in the result
     needs_ranges: bool = False
     power_of_two: bool = False
+    min_samples: int = 1  # and why fewer cannot be analysed
+    min_samples_why: str = ""
+    min_axes: int = 1
+    min_axes_why: str = ""
 
 
 def _salib(sweep: SweepDesign, draw: Callable[[], np.ndarray]) -> np.ndarray:
@@ -96,25 +100,44 @@ def _morris(sweep: SweepDesign) -> np.ndarray:
     return _salib(sweep, draw)
 
 
+def _quiet(analyse: Callable[[], Mapping[str, Any]]) -> dict:
+    """A SALib analysis with what it says kept off the terminal, under ``"notices"``.
+
+    SALib's delta analysis sets a warning filter of its own (``"once"``, which
+    beats a caller's ``"ignore"``) and replaces ``warnings.formatwarning`` for
+    the whole process; so the warnings are recorded rather than filtered, and
+    the formatter is put back. numpy's warnings on degenerate effects (all
+    equal) are recorded the same way.
+    """
+    formatter = warnings.formatwarning
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            res = dict(analyse())
+        finally:
+            warnings.formatwarning = formatter
+    res["notices"] = sorted({str(w.message).strip() for w in caught})
+    return res
+
+
 def _analyse_morris(sweep: SweepDesign, x: np.ndarray, y: np.ndarray) -> dict:
     from SALib.analyze import morris
 
     problem = salib_problem(sweep)
-    return dict(morris.analyze(problem, x, y, num_levels=sweep.levels, seed=sweep.seed))
+    return _quiet(lambda: morris.analyze(problem, x, y, num_levels=sweep.levels, seed=sweep.seed))
 
 
 def _analyse_sobol(sweep: SweepDesign, x: np.ndarray, y: np.ndarray) -> dict:
     from SALib.analyze import sobol
 
-    return dict(sobol.analyze(salib_problem(sweep), y, calc_second_order=False, seed=sweep.seed))
+    problem = salib_problem(sweep)
+    return _quiet(lambda: sobol.analyze(problem, y, calc_second_order=False, seed=sweep.seed))
 
 
 def _analyse_delta(sweep: SweepDesign, x: np.ndarray, y: np.ndarray) -> dict:
     from SALib.analyze import delta
 
-    with warnings.catch_warnings():  # SALib notes how it merged histogram bins
-        warnings.simplefilter("ignore")
-        res = dict(delta.analyze(salib_problem(sweep), x, y, seed=sweep.seed))
+    res = _quiet(lambda: delta.analyze(salib_problem(sweep), x, y, seed=sweep.seed))
     res["delta"], res["delta_conf"] = res["delta_raw"], res["delta_raw_conf"]
     return res
 
@@ -147,6 +170,9 @@ DESIGNS: dict[str, Design] = {
         indices={"S1": "S1_conf", "ST": "ST_conf"},
         needs_ranges=True,
         power_of_two=True,
+        min_axes=2,
+        min_axes_why="with one axis Saltelli's sample draws every point twice (its AB matrix "
+        "is B) and S1 = ST = 1 says nothing; add an axis, or use design = 'lhs' or 'grid'",
     ),
     "morris": Design(
         "morris",
@@ -157,5 +183,8 @@ DESIGNS: dict[str, Design] = {
         analyse=_analyse_morris,
         indices={"mu_star": "mu_star_conf", "sigma": None},
         needs_ranges=True,
+        min_samples=2,
+        min_samples_why="sigma, the spread of the elementary effects, needs at least two "
+        "trajectories; raise samples",
     ),
 }

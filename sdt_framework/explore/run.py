@@ -25,7 +25,7 @@ from ..errors import SDTError
 from ..registry import Registry
 from ..sensor_files import load_sensor_file
 from ..specs import SensorSpec
-from .design import design_points, unit_column
+from .design import design_points, repeated_point, unit_column
 from .points import Point, build_points, left_out
 from .size import design_size, sweep_estimate
 from .stage_axes import StageAxis, base_value, check_stage_axes
@@ -95,6 +95,9 @@ def plan_explore(
     n_points = design_size(sweep)
     (check or _refuse_unfit)(n_points, sweep_estimate(probe, base, n_points))
     design = design_points(sweep)
+    repeated = repeated_point(sweep, design)
+    if repeated is not None:
+        raise SDTError(f"{where}: {repeated}")
     points, skipped = build_points(sweep, base, design, stage_axes)
     if not points:
         raise SDTError(

@@ -110,8 +110,10 @@ def _salib_rows(cell: tuple, part: pd.DataFrame, sweep: Sweep, n_design: int) ->
     design = DESIGNS[sweep.design]
     res = design.analyse(sweep, x, y)  # type: ignore[misc]
     indices = design.indices or {}
+    notes = res.get("notes")  # SALib's own per-parameter notes (delta), kept in the table
     rows = []
     for i, field in enumerate(sweep.axes):
+        note = str(notes[i]).strip() if notes is not None and len(notes) > i else ""
         for index, conf in indices.items():
             value = float(res[index][i])
             half = float(res[conf][i]) if conf else float("nan")
@@ -124,7 +126,7 @@ def _salib_rows(cell: tuple, part: pd.DataFrame, sweep: Sweep, n_design: int) ->
                     "value": value,
                     "ci_low": value - half,
                     "ci_high": value + half,
-                    "note": "",
+                    "note": note,
                 }
             )
     return rows

@@ -112,6 +112,19 @@ def flatten_stage_keys(table: Any, fields: tuple[str, ...], leaf: type) -> Any:
 class _Model(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
 
+    @model_validator(mode="before")
+    @classmethod
+    def _no_booleans(cls, data: Any) -> Any:
+        """``true``/``false`` is not a number: pydantic would read it as 1/0, so it is refused."""
+        if isinstance(data, dict):
+            for key, value in data.items():
+                values = value if isinstance(value, list | tuple) else [value]
+                if key in cls.model_fields and any(isinstance(v, bool) for v in values):
+                    raise ValueError(
+                        f"{key}: true/false is not a number (it would be read as 1/0); give numbers"
+                    )
+        return data
+
 
 class Axis(_Model):
     """One swept parameter: explicit ``levels``, or a ``range`` sampled on a scale."""
@@ -262,4 +275,14 @@ class Sweep(_Model):
             )
         if design.power_of_two and self.samples & (self.samples - 1):
             raise ValueError(f"{self.design} needs samples as a power of two (got {self.samples})")
+        if self.samples < design.min_samples:
+            raise ValueError(
+                f"{self.design} needs samples >= {design.min_samples} (got {self.samples}): "
+                f"{design.min_samples_why}"
+            )
+        if len(self.axes) < design.min_axes:
+            raise ValueError(
+                f"{self.design} needs at least {design.min_axes} axes (got {len(self.axes)}): "
+                f"{design.min_axes_why}"
+            )
         return self
