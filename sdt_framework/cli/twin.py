@@ -83,6 +83,7 @@ def check(
       sdt --sensor-file fitted.toml twin check SSX66115.IDE --sensor adxl345-fitted --json
     """
     from ..twin import check_twin
+    from ..twin.clipping import describe
     from ..twin.plot import plot_check
     from ..validation.noise_plot import plot_formats
     from .guards import check_output_file
@@ -140,7 +141,7 @@ def check(
     d, c = result.distortion, result.clipped
     _say(f"THD of the {d['tone_hz']:.1f} Hz tone on {d['axis']}: reference {d['reference']:.2%}, "
          f"twin {d['twin']:.2%}, device {d['device']:.2%}; samples at full scale: device "
-         f"{c['device']}, twin {c['twin']}")  # fmt: skip
+         f"{describe(c['device_clipping'])}, twin {describe(c['twin_clipping'])}")  # fmt: skip
     k = result.calibration
     gain = f"; device/twin gain {k['tone_gain']:.3f} at {k['tone_hz']:.1f} Hz" if k["tone_gain"] \
         else ""  # fmt: skip

@@ -6,15 +6,19 @@ twin's, and the twin's error in dB. A band is *judgeable* only where the
 reference carries information: its band power at least :data:`MARGIN_DB`
 above the reference's own floor there (the median density of its tone-free
 bins within an octave either side, times the bandwidth: a floor that rises
-toward low frequencies is not taken for motion; broadband motion spanning
-more than two octaves is judged conservatively, as floor), and
+toward low frequencies is not taken for motion), and
 the band below the reference's band limit (:data:`REFERENCE_LIMIT` of its
 rate: a 5 kHz piezo channel cannot judge a 2.4 kHz band, whatever its
 numbers say). The summary is the worst judgeable band error and the RMS of
 the judgeable errors. Also reported: the transfer function twin -> device
 (Welch cross-spectra) with its coherence at each judgeable band's strongest
 bin, the noise floors, the harmonic distortion of the dominant tone and the
-samples at full scale.
+samples at full scale (:mod:`.clipping`: counted per axis, never a refusal).
+
+The floors are read from the seconds where nothing moves (:mod:`.floor`:
+per-segment Welch spectra, the quietest segments averaged), not from the
+median over frequency of the whole record: random vibration and shocks lift
+every bin of that median, which then reads the motion as floor.
 
 Two readings say what the pair itself can and cannot tell:
 
@@ -41,8 +45,9 @@ from scipy import signal
 
 from ..errors import SDTError
 from ..specs import SensorSpec
-from . import spectra
+from . import floor, spectra
 from .align import Alignment, align
+from .clipping import clipping
 from .pair import Pair
 
 __all__ = [
@@ -91,13 +96,19 @@ def in_sample(sensor: SensorSpec, pair: Pair) -> bool:
 def _judge(ref_rms: np.ndarray, floor: np.ndarray, bands: np.ndarray, limit: float) -> list:
     """(judgeable, reason) per axis and band; ``floor`` is the local floor density per band."""
     floor_rms = np.sqrt(floor * (bands[None, :, 2] - bands[None, :, 0]))
-    above = 20 * np.log10(np.maximum(ref_rms, 1e-30) / floor_rms)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        above = 20 * np.log10(ref_rms / floor_rms)
+    # a floor of 0 or a reference below the smallest float (a reference scaled by 1e-300)
+    # says nothing: not judgeable, never "infinitely far above"
+    measurable = np.isfinite(above) & (floor_rms > 0) & np.isfinite(floor_rms)
     out = []
-    for axis_above in above:
+    for axis_above, axis_ok in zip(above, measurable, strict=True):
         row = []
-        for band, level in zip(bands, axis_above, strict=True):
+        for band, level, ok in zip(bands, axis_above, axis_ok, strict=True):
             if band[2] > limit:
                 row.append((False, f"above the reference's band limit ({limit:.0f} Hz)"))
+            elif not ok:
+                row.append((False, "reference and its floor not measurable (zero or overflow)"))
             elif level < MARGIN_DB:
                 where = f"only {level:.1f} dB above" if level >= 0 else f"{-level:.1f} dB below"
                 row.append((False, f"reference {where} its floor"))
@@ -176,8 +187,10 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
     _, p_twin = spectra.psd(a.twin, a.rate_hz)
     bands = spectra.third_octaves(10.0, a.rate_hz / 2)
     limit = REFERENCE_LIMIT * ref_rate
-    ref_floor = spectra.floor_asd(f_ref, p_ref, 10.0, limit)
-    local = spectra.local_floor(f_ref, p_ref, bands)
+    count = floor.segments(a.reference.shape[1] / ref_rate, a.device.shape[1] / a.rate_hz)
+    ref_segments = floor.segmented(a.reference, ref_rate, count)
+    ref_floor = ref_segments.floor_asd(10.0, limit)
+    local, _ = ref_segments.local(bands, 10.0, limit)
     judged = _judge(spectra.band_rms(f_ref, p_ref, bands), local, bands, limit)
     if not any(ok for row in judged for ok, _ in row):
         raise SDTError(
@@ -202,12 +215,13 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             if ok:
                 errors.append((abs(error), error, axis, float(bands[b, 1])))
     floors_hi = a.rate_hz / 4  # below the digital corner of either part
-    dev_floor = spectra.floor_asd(f_dev, p_dev, 10.0, floors_hi)
-    twin_floor = spectra.floor_asd(f_dev, p_twin, 10.0, floors_hi)
+    dev_segments = floor.segmented(a.device, a.rate_hz, count)
+    quiet = dev_segments.quiet(10.0, floors_hi)  # the device's quiet seconds, for the twin too
+    dev_floor = dev_segments.floor_asd(10.0, floors_hi, quiet)
+    twin_floor = floor.segmented(a.twin, a.rate_hz, count).floor_asd(10.0, floors_hi, quiet)
     main = int(np.argmax(a.device.std(axis=1)))
     f0 = float(f_dev[np.argmax(p_dev[main, 1:]) + 1])
     worst = max(errors)
-    full = sensor.full_scale_g or np.inf
     return CheckResult(
         pair={
             "file": pair.name,
@@ -246,10 +260,17 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
                 "twin_ug": 1e6 * float(t),
                 "device_ug": 1e6 * float(d),
                 "twin_error_db": float(20 * np.log10(t / d)),
+                "quiet_s": float(q * dev_segments.segment_s),
+                "of_s": float(count * dev_segments.segment_s),
                 **_floor_judged(float(r), float(d)),
             }
-            for axis, r, t, d in zip(
-                pair.device.axes, ref_floor, twin_floor, dev_floor, strict=True
+            for axis, r, t, d, q in zip(
+                pair.device.axes,
+                ref_floor,
+                twin_floor,
+                dev_floor,
+                quiet.sum(axis=1),
+                strict=True,
             )
         ],
         distortion={
@@ -259,11 +280,7 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             "twin": spectra.thd(f_dev, p_twin[main], f0),
             "device": spectra.thd(f_dev, p_dev[main], f0),
         },
-        clipped={
-            "full_scale_g": sensor.full_scale_g,
-            "device": int(np.count_nonzero(np.abs(a.device) >= 0.999 * full)),
-            "twin": int(np.count_nonzero(np.abs(a.twin) >= 0.999 * full)),
-        },
+        clipped=clipping(a.device, a.twin, pair.device.axes, sensor.full_scale_g),
         calibration=_calibration(a, transfer, main),
         summary={
             "judgeable_bands": len(errors),
