@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import typer
 
 from ..errors import SDTError
@@ -24,9 +23,9 @@ def _load(ctx: typer.Context, pair: Path, sensor: str, axes: str | None, device:
     from dataclasses import replace
 
     from ..twin import load_pair
+    from ..twin.check import check_reference_scale
 
-    if not (np.isfinite(reference_scale) and reference_scale > 0):
-        raise SDTError(f"--reference-scale {reference_scale}: give a positive finite factor")
+    check_reference_scale(reference_scale)
     spec = registry(ctx).sensor(sensor)
     chosen = [a.strip().lower() for a in axes.split(",")] if axes else None
     with os_errors(str(pair)):

@@ -49,12 +49,15 @@ from . import floor, spectra
 from .align import Alignment, align
 from .clipping import clipping
 from .pair import Pair
+from .verdict import STATIC_TOLERANCE, calibration, no_band
 
 __all__ = [
     "MARGIN_DB",
     "REFERENCE_LIMIT",
+    "SCALE_RANGE",
     "STATIC_TOLERANCE",
     "CheckResult",
+    "check_reference_scale",
     "check_twin",
     "in_sample",
 ]
@@ -63,10 +66,8 @@ __all__ = [
 MARGIN_DB = 10.0
 #: ... and lies below this share of the reference's rate (its front end's band)
 REFERENCE_LIMIT = 0.4
-#: the tone's transfer must be this coherent before its gain is read as a calibration
-COHERENT = 0.98
-#: a device whose mean vector is within this share of 1 g has a sound static calibration
-STATIC_TOLERANCE = 0.05
+#: a --reference-scale outside this range (+-20 dB) is no calibration correction
+SCALE_RANGE = (0.1, 10.0)
 
 
 @dataclass
@@ -84,8 +85,35 @@ class CheckResult:
     spectra: dict[str, Any] = field(repr=False, default_factory=dict)  # for the figures
 
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready form (the figure arrays left out)."""
-        return {k: v for k, v in vars(self).items() if k != "spectra"}
+        """JSON-ready form (the figure arrays left out; NaN and infinities as None, so the
+        JSON is valid: a THD with no fundamental, a gain of a silent band)."""
+        return _finite({k: v for k, v in vars(self).items() if k != "spectra"})
+
+
+def _finite(value: Any) -> Any:
+    """``value`` with every non-finite float (at any depth) replaced by None."""
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_finite(v) for v in value]
+    if isinstance(value, float | np.floating) and not np.isfinite(value):
+        return None
+    return value
+
+
+def check_reference_scale(factor: float) -> None:
+    """Refuse a ``--reference-scale`` outside :data:`SCALE_RANGE`: it corrects a reference's
+    calibration, which is never off by 20 dB; a factor beyond that is a typo (1626 for
+    1.626) or a unit conversion, and would give a confident wrong check (a twin clipping on
+    a reference 1000 times too strong, or a reference below the smallest float)."""
+    lo, hi = SCALE_RANGE
+    if not (np.isfinite(factor) and lo <= factor <= hi):
+        raise SDTError(
+            f"--reference-scale {factor:g}: outside the plausible {lo:g}-{hi:g}; it corrects "
+            f"the reference's calibration (the check's 'calibration' line gives the factor, "
+            f"e.g. 1.626), which is never off by 20 dB; for other units give the pair "
+            f"file's units (g, mg, m/s^2)"
+        )
 
 
 def in_sample(sensor: SensorSpec, pair: Pair) -> bool:
@@ -142,40 +170,21 @@ def _transfer(a: Alignment, bands: np.ndarray, judged: list) -> tuple[dict, dict
     return out, arrays
 
 
+def _db(a: float, b: float) -> float:
+    """20 log10(a / b); NaN (None in JSON) when either is zero or not finite."""
+    ok = a > 0 and b > 0 and np.isfinite(a) and np.isfinite(b)
+    return float(20 * np.log10(a / b)) if ok else float("nan")
+
+
 def _floor_judged(reference: float, device: float) -> dict[str, Any]:
     """Whether the twin's noise floor can be judged: the reference's must lie well below."""
+    if not (reference > 0 and np.isfinite(reference) and device > 0 and np.isfinite(device)):
+        return {"judgeable": False, "reason": "a floor of zero or beyond floats: not measurable"}
     below = float(20 * np.log10(device / reference))
     if below >= MARGIN_DB:
         return {"judgeable": True, "reason": f"reference floor {below:.1f} dB below the device's"}
     where = f"only {below:.1f} dB below" if below >= 0 else f"{-below:.1f} dB above"
     return {"judgeable": False, "reason": f"reference floor {where} the device's"}
-
-
-def _calibration(a: Alignment, transfer: dict, main: int) -> dict[str, Any]:
-    """The device's static reading (|mean vector|, g) and the gain at the dominant tone."""
-    static = float(np.linalg.norm(a.device.mean(axis=1)))
-    tone = max(
-        (v for (i, _), v in transfer.items() if i == main and v["coherence"] >= COHERENT),
-        key=lambda v: v["coherence"],
-        default=None,
-    )
-    gain = None if tone is None else float(10 ** (tone["gain_db"] / 20))
-    sound = abs(static - 1.0) <= STATIC_TOLERANCE
-    off = gain is not None and abs(gain - 1.0) > STATIC_TOLERANCE
-    if not sound:
-        verdict = "the device does not read 1 g at rest (AC-coupled, or its calibration is off)"
-    elif off:
-        verdict = "the device reads gravity right: the gain disagreement is the reference's"
-    else:
-        verdict = "the device reads gravity right and agrees with the reference in gain"
-    return {
-        "static_g": static,
-        "static_sound": sound,
-        "tone_gain": gain,
-        "tone_hz": None if tone is None else tone["at_hz"],
-        "reference_off": bool(sound and off),
-        "verdict": verdict,
-    }
 
 
 def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
@@ -193,19 +202,14 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
     local, _ = ref_segments.local(bands, 10.0, limit)
     judged = _judge(spectra.band_rms(f_ref, p_ref, bands), local, bands, limit)
     if not any(ok for row in judged for ok, _ in row):
-        raise SDTError(
-            f"{pair.name}: no band can be judged: on every axis the reference stays within "
-            f"{MARGIN_DB:g} dB of its own floor below its band limit ({limit:.0f} Hz), so it "
-            f"carries no motion to compare (a recording at rest? `sdt validate-noise "
-            f"--recording` checks a noise floor)"
-        )
+        raise SDTError(no_band(pair.name, sensor, a.rate_hz, limit, len(bands), MARGIN_DB))
     real = spectra.band_rms(f_dev, p_dev, bands)
     twin = spectra.band_rms(f_dev, p_twin, bands)
     transfer, transfer_arrays = _transfer(a, bands, judged)
     rows, errors = [], []
     for i, axis in enumerate(pair.device.axes):
         for b, (ok, reason) in enumerate(judged[i]):
-            error = float(20 * np.log10(twin[i, b] / real[i, b]))
+            error = _db(twin[i, b], real[i, b])
             rows.append({
                 "axis": axis, "f_lower_hz": float(bands[b, 0]), "f_centre_hz": float(bands[b, 1]),
                 "f_upper_hz": float(bands[b, 2]), "real_rms_g": float(real[i, b]),
@@ -222,6 +226,7 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
     main = int(np.argmax(a.device.std(axis=1)))
     f0 = float(f_dev[np.argmax(p_dev[main, 1:]) + 1])
     worst = max(errors)
+    clipped = clipping(a.device, a.twin, pair.device.axes, sensor.full_scale_g)
     return CheckResult(
         pair={
             "file": pair.name,
@@ -259,7 +264,7 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
                 "reference_ug": 1e6 * float(r),
                 "twin_ug": 1e6 * float(t),
                 "device_ug": 1e6 * float(d),
-                "twin_error_db": float(20 * np.log10(t / d)),
+                "twin_error_db": _db(t, d),
                 "quiet_s": float(q * dev_segments.segment_s),
                 "of_s": float(count * dev_segments.segment_s),
                 **_floor_judged(float(r), float(d)),
@@ -280,8 +285,8 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             "twin": spectra.thd(f_dev, p_twin[main], f0),
             "device": spectra.thd(f_dev, p_dev[main], f0),
         },
-        clipped=clipping(a.device, a.twin, pair.device.axes, sensor.full_scale_g),
-        calibration=_calibration(a, transfer, main),
+        clipped=clipped,
+        calibration=calibration(a.device, transfer, main, clipped, sensor, a.rate_hz),
         summary={
             "judgeable_bands": len(errors),
             "worst_error_db": worst[1],
