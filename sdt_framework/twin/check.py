@@ -32,7 +32,9 @@ Two readings say what the pair itself can and cannot tell:
   hence the :data:`STATIC_TOLERANCE`). When that holds and the twin still
   disagrees in gain at the dominant tone, the disagreement is the
   reference's calibration, not the part's, and ``sdt twin fit`` does not
-  write it into the profile.
+  write it into the profile; unless a first cause explains the gain (a
+  device rate that is not the part's, clipping) or no tone gives one
+  (:mod:`.verdict`).
 """
 
 from __future__ import annotations
@@ -286,7 +288,9 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             "device": spectra.thd(f_dev, p_dev[main], f0),
         },
         clipped=clipped,
-        calibration=calibration(a.device, transfer, main, clipped, sensor, a.rate_hz),
+        calibration=calibration(
+            a.device, transfer, main, clipped, sensor, a.rate_hz, (f_dev, p_dev[main])
+        ),
         summary={
             "judgeable_bands": len(errors),
             "worst_error_db": worst[1],

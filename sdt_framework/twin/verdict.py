@@ -11,8 +11,9 @@ the gain or of the motion:
    (timestamps in milliseconds read as seconds, a ``rate_hz`` off 1000-fold):
    nothing measured after it is a calibration.
 2. **The twin or the device clips.** The gain at a tone that one of them
-   flattens is the clipping's; a device beyond the part's full scale is not
-   that part, or not at that range.
+   flattens may be the clipping's (a few clipped shock peaks can carry most
+   of a record's low-frequency power); a device beyond the part's full scale
+   is not that part, or not at that range.
 3. Then the static reading (a DC-coupled part at rest reads 1 g), and the
    gain at the dominant tone: **no gain** when no tone is coherent enough to
    read one, the **reference's** disagreement when the device reads gravity
@@ -26,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..specs import SensorSpec
+from .spectra import TONE_FACTOR
 
 __all__ = [
     "COHERENT",
@@ -86,16 +88,31 @@ def _clipping(clipped: dict[str, Any], sensor: SensorSpec, device: np.ndarray) -
             )
     if not found:
         return None
-    return "; ".join(found) + ": the gain at the tone is the clipping's, not a calibration"
+    return "; ".join(found) + ": the gain at the tone may be the clipping's, not a calibration"
 
 
 def calibration(device: np.ndarray, transfer: dict, main: int, clipped: dict[str, Any],
-                sensor: SensorSpec, rate_hz: float) -> dict[str, Any]:  # fmt: skip
+                sensor: SensorSpec, rate_hz: float,
+                spectrum: tuple[np.ndarray, np.ndarray]) -> dict[str, Any]:  # fmt: skip
     """The device's static reading (|mean vector|, g), the gain at the dominant tone, and the
-    verdict (module docstring); ``reference_off`` only when the gain can be the reference's."""
+    verdict (module docstring); ``reference_off`` only when the gain can be the reference's.
+
+    ``spectrum`` is the device's (frequencies, density) on the main axis: a gain is read
+    only at a *tone* (a bin :data:`.spectra.TONE_FACTOR` times the median density or more).
+    In broadband motion every bin is coherent and none is a tone; the gain there is the
+    estimator's (twin noise biases it low), not a calibration.
+    """
+    freqs, density = spectrum
+    tonal = density >= TONE_FACTOR * np.median(density[1:])
     static = float(np.linalg.norm(device.mean(axis=1)))
     tone = max(
-        (v for (i, _), v in transfer.items() if i == main and v["coherence"] >= COHERENT),
+        (
+            v
+            for (i, _), v in transfer.items()
+            if i == main
+            and v["coherence"] >= COHERENT
+            and tonal[int(np.argmin(np.abs(freqs - v["at_hz"])))]
+        ),
         key=lambda v: v["coherence"],
         default=None,
     )
@@ -110,7 +127,7 @@ def calibration(device: np.ndarray, transfer: dict, main: int, clipped: dict[str
     elif gain is None:
         verdict = (
             f"the device reads gravity right; no gain could be compared (no tone on the "
-            f"main axis with a coherence of {COHERENT:g} or more between twin and device)"
+            f"main axis coherent to {COHERENT:g} or more between twin and device)"
         )
     elif off:
         verdict = "the device reads gravity right: the gain disagreement is the reference's"
