@@ -58,8 +58,8 @@ def check(
     reference_scale: float = typer.Option(
         1.0,
         "--reference-scale",
-        help="Multiply the reference by this factor first: correct a reference whose "
-        "calibration the check found off (its 'calibration' line).",
+        help="Multiply the reference by this factor first (0.1-10): correct a reference "
+        "whose calibration the check found off (its 'calibration' line).",
     ),
     plot: Path | None = typer.Option(
         None, "--plot", help="Save the spectra and transfer figure here (.png, .pdf, .svg)."
