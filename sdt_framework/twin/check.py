@@ -51,7 +51,7 @@ from . import floor, spectra
 from .align import Alignment, align
 from .clipping import clipping
 from .pair import Pair
-from .verdict import STATIC_TOLERANCE, calibration, no_band
+from .verdict import SCALE_RANGE, STATIC_TOLERANCE, calibration, check_reference_scale, no_band
 
 __all__ = [
     "MARGIN_DB",
@@ -68,8 +68,6 @@ __all__ = [
 MARGIN_DB = 10.0
 #: ... and lies below this share of the reference's rate (its front end's band)
 REFERENCE_LIMIT = 0.4
-#: a --reference-scale outside this range (+-20 dB) is no calibration correction
-SCALE_RANGE = (0.1, 10.0)
 
 
 @dataclass
@@ -101,21 +99,6 @@ def _finite(value: Any) -> Any:
     if isinstance(value, float | np.floating) and not np.isfinite(value):
         return None
     return value
-
-
-def check_reference_scale(factor: float) -> None:
-    """Refuse a ``--reference-scale`` outside :data:`SCALE_RANGE`: it corrects a reference's
-    calibration, which is never off by 20 dB; a factor beyond that is a typo (1626 for
-    1.626) or a unit conversion, and would give a confident wrong check (a twin clipping on
-    a reference 1000 times too strong, or a reference below the smallest float)."""
-    lo, hi = SCALE_RANGE
-    if not (np.isfinite(factor) and lo <= factor <= hi):
-        raise SDTError(
-            f"--reference-scale {factor:g}: outside the plausible {lo:g}-{hi:g}; it corrects "
-            f"the reference's calibration (the check's 'calibration' line gives the factor, "
-            f"e.g. 1.626), which is never off by 20 dB; for other units give the pair "
-            f"file's units (g, mg, m/s^2)"
-        )
 
 
 def in_sample(sensor: SensorSpec, pair: Pair) -> bool:

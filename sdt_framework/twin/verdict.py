@@ -18,6 +18,9 @@ the gain or of the motion:
    gain at the dominant tone: **no gain** when no tone is coherent enough to
    read one, the **reference's** disagreement when the device reads gravity
    right and the gain is off, agreement otherwise.
+
+A ``--reference-scale`` (the correction the last case points to) is refused
+outside :data:`SCALE_RANGE` before any work (:func:`check_reference_scale`).
 """
 
 from __future__ import annotations
@@ -26,18 +29,23 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import SDTError
 from ..specs import SensorSpec
 from .spectra import TONE_FACTOR
 
 __all__ = [
     "COHERENT",
     "RATE_TOLERANCE",
+    "SCALE_RANGE",
     "STATIC_TOLERANCE",
     "calibration",
+    "check_reference_scale",
     "no_band",
     "rate_mismatch",
 ]
 
+#: a --reference-scale outside this range (+-20 dB) is no calibration correction
+SCALE_RANGE = (0.1, 10.0)
 #: the tone's transfer must be this coherent before its gain is read as a calibration
 COHERENT = 0.98
 #: a device whose mean vector is within this share of 1 g has a sound static calibration
@@ -169,3 +177,18 @@ def no_band(name: str, sensor: SensorSpec, rate_hz: float, limit: float, bands: 
         f"limit ({limit:.0f} Hz), so it carries no motion to compare (a recording at rest? "
         f"`sdt validate-noise --recording` checks a noise floor)"
     )
+
+
+def check_reference_scale(factor: float) -> None:
+    """Refuse a ``--reference-scale`` outside :data:`SCALE_RANGE`: it corrects a reference's
+    calibration, which is never off by 20 dB; a factor beyond that is a typo (1626 for
+    1.626) or a unit conversion, and would give a confident wrong check (a twin clipping on
+    a reference 1000 times too strong, or a reference below the smallest float)."""
+    lo, hi = SCALE_RANGE
+    if not (np.isfinite(factor) and lo <= factor <= hi):
+        raise SDTError(
+            f"--reference-scale {factor:g}: outside the plausible {lo:g}-{hi:g}; it corrects "
+            f"the reference's calibration (the check's 'calibration' line gives the factor, "
+            f"e.g. 1.626), which is never off by 20 dB; for other units give the pair "
+            f"file's units (g, mg, m/s^2)"
+        )
