@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import typer
 
 from ..errors import SDTError
@@ -24,9 +23,9 @@ def _load(ctx: typer.Context, pair: Path, sensor: str, axes: str | None, device:
     from dataclasses import replace
 
     from ..twin import load_pair
+    from ..twin.check import check_reference_scale
 
-    if not (np.isfinite(reference_scale) and reference_scale > 0):
-        raise SDTError(f"--reference-scale {reference_scale}: give a positive finite factor")
+    check_reference_scale(reference_scale)
     spec = registry(ctx).sensor(sensor)
     chosen = [a.strip().lower() for a in axes.split(",")] if axes else None
     with os_errors(str(pair)):
@@ -59,8 +58,8 @@ def check(
     reference_scale: float = typer.Option(
         1.0,
         "--reference-scale",
-        help="Multiply the reference by this factor first: correct a reference whose "
-        "calibration the check found off (its 'calibration' line).",
+        help="Multiply the reference by this factor first (0.1-10): correct a reference "
+        "whose calibration the check found off (its 'calibration' line).",
     ),
     plot: Path | None = typer.Option(
         None, "--plot", help="Save the spectra and transfer figure here (.png, .pdf, .svg)."
@@ -84,6 +83,7 @@ def check(
       sdt --sensor-file fitted.toml twin check SSX66115.IDE --sensor adxl345-fitted --json
     """
     from ..twin import check_twin
+    from ..twin.clipping import describe
     from ..twin.plot import plot_check
     from ..validation.noise_plot import plot_formats
     from .guards import check_output_file
@@ -144,7 +144,7 @@ def check(
     d, c = result.distortion, result.clipped
     _say(f"THD of the {d['tone_hz']:.1f} Hz tone on {d['axis']}: reference {d['reference']:.2%}, "
          f"twin {d['twin']:.2%}, device {d['device']:.2%}; samples at full scale: device "
-         f"{c['device']}, twin {c['twin']}")  # fmt: skip
+         f"{describe(c['device_clipping'])}, twin {describe(c['twin_clipping'])}")  # fmt: skip
     k = result.calibration
     gain = f"; device/twin gain {k['tone_gain']:.3f} at {k['tone_hz']:.1f} Hz" if k["tone_gain"] \
         else ""  # fmt: skip

@@ -6,15 +6,19 @@ twin's, and the twin's error in dB. A band is *judgeable* only where the
 reference carries information: its band power at least :data:`MARGIN_DB`
 above the reference's own floor there (the median density of its tone-free
 bins within an octave either side, times the bandwidth: a floor that rises
-toward low frequencies is not taken for motion; broadband motion spanning
-more than two octaves is judged conservatively, as floor), and
+toward low frequencies is not taken for motion), and
 the band below the reference's band limit (:data:`REFERENCE_LIMIT` of its
 rate: a 5 kHz piezo channel cannot judge a 2.4 kHz band, whatever its
 numbers say). The summary is the worst judgeable band error and the RMS of
 the judgeable errors. Also reported: the transfer function twin -> device
 (Welch cross-spectra) with its coherence at each judgeable band's strongest
 bin, the noise floors, the harmonic distortion of the dominant tone and the
-samples at full scale.
+samples at full scale (:mod:`.clipping`: counted per axis, never a refusal).
+
+The floors are read from the seconds where nothing moves (:mod:`.floor`:
+per-segment Welch spectra, the quietest segments averaged), not from the
+median over frequency of the whole record: random vibration and shocks lift
+every bin of that median, which then reads the motion as floor.
 
 Two readings say what the pair itself can and cannot tell:
 
@@ -28,7 +32,9 @@ Two readings say what the pair itself can and cannot tell:
   hence the :data:`STATIC_TOLERANCE`). When that holds and the twin still
   disagrees in gain at the dominant tone, the disagreement is the
   reference's calibration, not the part's, and ``sdt twin fit`` does not
-  write it into the profile.
+  write it into the profile; unless a first cause explains the gain (a
+  device rate that is not the part's, clipping) or no tone gives one
+  (:mod:`.verdict`).
 """
 
 from __future__ import annotations
@@ -41,15 +47,19 @@ from scipy import signal
 
 from ..errors import SDTError
 from ..specs import SensorSpec
-from . import spectra
+from . import floor, spectra
 from .align import Alignment, align
+from .clipping import clipping
 from .pair import Pair
+from .verdict import SCALE_RANGE, STATIC_TOLERANCE, calibration, check_reference_scale, no_band
 
 __all__ = [
     "MARGIN_DB",
     "REFERENCE_LIMIT",
+    "SCALE_RANGE",
     "STATIC_TOLERANCE",
     "CheckResult",
+    "check_reference_scale",
     "check_twin",
     "in_sample",
 ]
@@ -58,10 +68,6 @@ __all__ = [
 MARGIN_DB = 10.0
 #: ... and lies below this share of the reference's rate (its front end's band)
 REFERENCE_LIMIT = 0.4
-#: the tone's transfer must be this coherent before its gain is read as a calibration
-COHERENT = 0.98
-#: a device whose mean vector is within this share of 1 g has a sound static calibration
-STATIC_TOLERANCE = 0.05
 
 
 @dataclass
@@ -79,8 +85,20 @@ class CheckResult:
     spectra: dict[str, Any] = field(repr=False, default_factory=dict)  # for the figures
 
     def as_dict(self) -> dict[str, Any]:
-        """JSON-ready form (the figure arrays left out)."""
-        return {k: v for k, v in vars(self).items() if k != "spectra"}
+        """JSON-ready form (the figure arrays left out; NaN and infinities as None, so the
+        JSON is valid: a THD with no fundamental, a gain of a silent band)."""
+        return _finite({k: v for k, v in vars(self).items() if k != "spectra"})
+
+
+def _finite(value: Any) -> Any:
+    """``value`` with every non-finite float (at any depth) replaced by None."""
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_finite(v) for v in value]
+    if isinstance(value, float | np.floating) and not np.isfinite(value):
+        return None
+    return value
 
 
 def in_sample(sensor: SensorSpec, pair: Pair) -> bool:
@@ -91,13 +109,19 @@ def in_sample(sensor: SensorSpec, pair: Pair) -> bool:
 def _judge(ref_rms: np.ndarray, floor: np.ndarray, bands: np.ndarray, limit: float) -> list:
     """(judgeable, reason) per axis and band; ``floor`` is the local floor density per band."""
     floor_rms = np.sqrt(floor * (bands[None, :, 2] - bands[None, :, 0]))
-    above = 20 * np.log10(np.maximum(ref_rms, 1e-30) / floor_rms)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        above = 20 * np.log10(ref_rms / floor_rms)
+    # a floor of 0 or a reference below the smallest float (a reference scaled by 1e-300)
+    # says nothing: not judgeable, never "infinitely far above"
+    measurable = np.isfinite(above) & (floor_rms > 0) & np.isfinite(floor_rms)
     out = []
-    for axis_above in above:
+    for axis_above, axis_ok in zip(above, measurable, strict=True):
         row = []
-        for band, level in zip(bands, axis_above, strict=True):
+        for band, level, ok in zip(bands, axis_above, axis_ok, strict=True):
             if band[2] > limit:
                 row.append((False, f"above the reference's band limit ({limit:.0f} Hz)"))
+            elif not ok:
+                row.append((False, "reference and its floor not measurable (zero or overflow)"))
             elif level < MARGIN_DB:
                 where = f"only {level:.1f} dB above" if level >= 0 else f"{-level:.1f} dB below"
                 row.append((False, f"reference {where} its floor"))
@@ -131,40 +155,21 @@ def _transfer(a: Alignment, bands: np.ndarray, judged: list) -> tuple[dict, dict
     return out, arrays
 
 
+def _db(a: float, b: float) -> float:
+    """20 log10(a / b); NaN (None in JSON) when either is zero or not finite."""
+    ok = a > 0 and b > 0 and np.isfinite(a) and np.isfinite(b)
+    return float(20 * np.log10(a / b)) if ok else float("nan")
+
+
 def _floor_judged(reference: float, device: float) -> dict[str, Any]:
     """Whether the twin's noise floor can be judged: the reference's must lie well below."""
+    if not (reference > 0 and np.isfinite(reference) and device > 0 and np.isfinite(device)):
+        return {"judgeable": False, "reason": "a floor of zero or beyond floats: not measurable"}
     below = float(20 * np.log10(device / reference))
     if below >= MARGIN_DB:
         return {"judgeable": True, "reason": f"reference floor {below:.1f} dB below the device's"}
     where = f"only {below:.1f} dB below" if below >= 0 else f"{-below:.1f} dB above"
     return {"judgeable": False, "reason": f"reference floor {where} the device's"}
-
-
-def _calibration(a: Alignment, transfer: dict, main: int) -> dict[str, Any]:
-    """The device's static reading (|mean vector|, g) and the gain at the dominant tone."""
-    static = float(np.linalg.norm(a.device.mean(axis=1)))
-    tone = max(
-        (v for (i, _), v in transfer.items() if i == main and v["coherence"] >= COHERENT),
-        key=lambda v: v["coherence"],
-        default=None,
-    )
-    gain = None if tone is None else float(10 ** (tone["gain_db"] / 20))
-    sound = abs(static - 1.0) <= STATIC_TOLERANCE
-    off = gain is not None and abs(gain - 1.0) > STATIC_TOLERANCE
-    if not sound:
-        verdict = "the device does not read 1 g at rest (AC-coupled, or its calibration is off)"
-    elif off:
-        verdict = "the device reads gravity right: the gain disagreement is the reference's"
-    else:
-        verdict = "the device reads gravity right and agrees with the reference in gain"
-    return {
-        "static_g": static,
-        "static_sound": sound,
-        "tone_gain": gain,
-        "tone_hz": None if tone is None else tone["at_hz"],
-        "reference_off": bool(sound and off),
-        "verdict": verdict,
-    }
 
 
 def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
@@ -176,23 +181,20 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
     _, p_twin = spectra.psd(a.twin, a.rate_hz)
     bands = spectra.third_octaves(10.0, a.rate_hz / 2)
     limit = REFERENCE_LIMIT * ref_rate
-    ref_floor = spectra.floor_asd(f_ref, p_ref, 10.0, limit)
-    local = spectra.local_floor(f_ref, p_ref, bands)
+    count = floor.segments(a.reference.shape[1] / ref_rate, a.device.shape[1] / a.rate_hz)
+    ref_segments = floor.segmented(a.reference, ref_rate, count)
+    ref_floor = ref_segments.floor_asd(10.0, limit)
+    local, _ = ref_segments.local(bands, 10.0, limit)
     judged = _judge(spectra.band_rms(f_ref, p_ref, bands), local, bands, limit)
     if not any(ok for row in judged for ok, _ in row):
-        raise SDTError(
-            f"{pair.name}: no band can be judged: on every axis the reference stays within "
-            f"{MARGIN_DB:g} dB of its own floor below its band limit ({limit:.0f} Hz), so it "
-            f"carries no motion to compare (a recording at rest? `sdt validate-noise "
-            f"--recording` checks a noise floor)"
-        )
+        raise SDTError(no_band(pair.name, sensor, a.rate_hz, limit, len(bands), MARGIN_DB))
     real = spectra.band_rms(f_dev, p_dev, bands)
     twin = spectra.band_rms(f_dev, p_twin, bands)
     transfer, transfer_arrays = _transfer(a, bands, judged)
     rows, errors = [], []
     for i, axis in enumerate(pair.device.axes):
         for b, (ok, reason) in enumerate(judged[i]):
-            error = float(20 * np.log10(twin[i, b] / real[i, b]))
+            error = _db(twin[i, b], real[i, b])
             rows.append({
                 "axis": axis, "f_lower_hz": float(bands[b, 0]), "f_centre_hz": float(bands[b, 1]),
                 "f_upper_hz": float(bands[b, 2]), "real_rms_g": float(real[i, b]),
@@ -202,12 +204,14 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             if ok:
                 errors.append((abs(error), error, axis, float(bands[b, 1])))
     floors_hi = a.rate_hz / 4  # below the digital corner of either part
-    dev_floor = spectra.floor_asd(f_dev, p_dev, 10.0, floors_hi)
-    twin_floor = spectra.floor_asd(f_dev, p_twin, 10.0, floors_hi)
+    dev_segments = floor.segmented(a.device, a.rate_hz, count)
+    quiet = dev_segments.quiet(10.0, floors_hi)  # the device's quiet seconds, for the twin too
+    dev_floor = dev_segments.floor_asd(10.0, floors_hi, quiet)
+    twin_floor = floor.segmented(a.twin, a.rate_hz, count).floor_asd(10.0, floors_hi, quiet)
     main = int(np.argmax(a.device.std(axis=1)))
     f0 = float(f_dev[np.argmax(p_dev[main, 1:]) + 1])
     worst = max(errors)
-    full = sensor.full_scale_g or np.inf
+    clipped = clipping(a.device, a.twin, pair.device.axes, sensor.full_scale_g)
     return CheckResult(
         pair={
             "file": pair.name,
@@ -245,11 +249,18 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
                 "reference_ug": 1e6 * float(r),
                 "twin_ug": 1e6 * float(t),
                 "device_ug": 1e6 * float(d),
-                "twin_error_db": float(20 * np.log10(t / d)),
+                "twin_error_db": _db(t, d),
+                "quiet_s": float(q * dev_segments.segment_s),
+                "of_s": float(count * dev_segments.segment_s),
                 **_floor_judged(float(r), float(d)),
             }
-            for axis, r, t, d in zip(
-                pair.device.axes, ref_floor, twin_floor, dev_floor, strict=True
+            for axis, r, t, d, q in zip(
+                pair.device.axes,
+                ref_floor,
+                twin_floor,
+                dev_floor,
+                quiet.sum(axis=1),
+                strict=True,
             )
         ],
         distortion={
@@ -259,12 +270,10 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
             "twin": spectra.thd(f_dev, p_twin[main], f0),
             "device": spectra.thd(f_dev, p_dev[main], f0),
         },
-        clipped={
-            "full_scale_g": sensor.full_scale_g,
-            "device": int(np.count_nonzero(np.abs(a.device) >= 0.999 * full)),
-            "twin": int(np.count_nonzero(np.abs(a.twin) >= 0.999 * full)),
-        },
-        calibration=_calibration(a, transfer, main),
+        clipped=clipped,
+        calibration=calibration(
+            a.device, transfer, main, clipped, sensor, a.rate_hz, (f_dev, p_dev[main])
+        ),
         summary={
             "judgeable_bands": len(errors),
             "worst_error_db": worst[1],

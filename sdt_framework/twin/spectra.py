@@ -6,7 +6,8 @@ g^2/Hz. Band RMS is the square root of the density integrated over the band's
 bins. A *floor* is the median amplitude density between ``lo`` and ``hi``
 after the bins within three bins of any tone (a bin ten times the median
 density or more) are dropped: the broadband level a tone and its harmonics do
-not lift.
+not lift. ``sdt twin check`` reads its floors from the quiet time segments
+instead (:mod:`.floor`), so that broadband motion is not taken for floor.
 """
 
 from __future__ import annotations
@@ -64,20 +65,6 @@ def floor_asd(freqs: np.ndarray, density: np.ndarray, lo: float, hi: float) -> n
     return np.array(
         [np.sqrt(np.median(row[mask])) for row, mask in zip(density, keep, strict=True)]
     )
-
-
-def local_floor(freqs: np.ndarray, density: np.ndarray, bands: np.ndarray) -> np.ndarray:
-    """Floor density (g^2/Hz) per row and band: the median of the tone-free bins within one
-    octave either side of the band's centre. A floor that rises toward low frequencies (a
-    piezo's 1/f) is then not mistaken for motion above a flat floor."""
-    free = ~tone_bins(density)
-    out = np.empty((density.shape[0], len(bands)))
-    for b, centre in enumerate(bands[:, 1]):
-        near = (freqs >= centre / 2) & (freqs <= centre * 2)
-        for i, row in enumerate(density):
-            values = row[near & free[i]]
-            out[i, b] = np.median(values) if len(values) else np.median(row[near])
-    return out
 
 
 def thd(freqs: np.ndarray, density: np.ndarray, f0: float, harmonics: int = 5) -> float:
