@@ -222,11 +222,13 @@ def inspect(
 
 def _inspect_ide(path: str, as_json: bool) -> None:
     """Channels of an IDE file: parts, axes, units, samples, measured and median rates."""
-    from ..data.ide import inspect_ide
+    from ..data.ide import read_channels
     from .guards import os_errors
 
     with os_errors(path):
-        channels = inspect_ide(path)
+        channels, notes = read_channels(path)
+    for note in notes:
+        err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
     if as_json:
         print_json([c.as_dict() for c in channels])
         return

@@ -35,6 +35,7 @@ __all__ = [
     "is_ide",
     "matches_part",
     "part_channel",
+    "read_channels",
     "read_ide",
     "read_variable",
 ]
@@ -110,18 +111,10 @@ def is_ide(path: str | os.PathLike[str]) -> bool:
 
 
 def _open(path: str | os.PathLike[str]) -> Any:
-    import idelib  # heavy: on use only
+    """The imported file (:func:`.ide_open.open_ide`: a damaged file is refused)."""
+    from .ide_open import open_ide
 
-    path = Path(path)
-    if not path.is_file():
-        raise SDTError(f"{path}: no such IDE file; check the path")
-    try:
-        return idelib.importFile(str(path))
-    except Exception as exc:
-        raise SDTError(
-            f"{path}: not a readable enDAQ IDE file ({type(exc).__name__}); give a .IDE "
-            f"recording written by an enDAQ or Slam Stick recorder"
-        ) from None
+    return open_ide(path)
 
 
 def _axis(name: str) -> str | None:
@@ -158,11 +151,17 @@ def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
 
 def inspect_ide(path: str | os.PathLike[str]) -> list[IdeChannel]:
     """Every channel of the IDE file at ``path``, in id order."""
-    doc = _open(path)
+    return read_channels(path)[0]
+
+
+def read_channels(path: str | os.PathLike[str]) -> tuple[list[IdeChannel], tuple[str, ...]]:
+    """(every channel of the IDE file at ``path`` in id order, notes on how it was read)."""
+    opened = _open(path)
     try:
-        return [_describe(doc.channels[cid])[0] for cid in sorted(doc.channels)]
+        doc = opened.doc
+        return [_describe(doc.channels[cid])[0] for cid in sorted(doc.channels)], opened.notes
     finally:
-        doc.close()
+        opened.doc.close()
 
 
 def read_ide(
@@ -172,7 +171,8 @@ def read_ide(
 ) -> IdeSignal:
     """Samples of ``channel`` (by id), its ``subchannels`` (axes ``x``/``y``/``z`` or names;
     default every one), on an even time grid at the measured rate."""
-    doc = _open(path)
+    opened = _open(path)
+    doc = opened.doc
     try:
         if channel not in doc.channels:
             found = ", ".join(f"{c} ({doc.channels[c].name})" for c in sorted(doc.channels))
@@ -196,9 +196,23 @@ def read_ide(
         raise SDTError(f"{path}: channel {channel} holds {info.samples} samples; nothing to read")
     times = data[0] * 1e-6
     values = data[[1 + s.index for s in chosen]]
+    _require_finite(path, channel, times, values)
     even = on_even_grid(times, values, f"{Path(path).name} channel {channel}")
+    note = "; ".join(filter(None, (*opened.notes, even.note))) or None
     return IdeSignal(str(path), info, tuple(chosen), even.start_s, even.rate_hz, even.values,
-                     even.note, even.rate_sd_hz)  # fmt: skip
+                     note, even.rate_sd_hz)  # fmt: skip
+
+
+def _require_finite(path: str | os.PathLike[str], channel: int, times: np.ndarray,
+                    values: np.ndarray) -> None:  # fmt: skip
+    """Refuse a channel holding a NaN or infinite sample (idelib's reading of damaged bytes)."""
+    bad = ~np.isfinite(values).all(axis=0) | ~np.isfinite(times)
+    if bad.any():
+        first = int(np.argmax(bad))
+        raise SDTError(
+            f"{path}: channel {channel}, sample {first} (at {times[first]:.4f} s): "
+            f"{int(bad.sum())} non-finite value(s); the file is damaged there"
+        )
 
 
 def accelerometers(channels: list[IdeChannel]) -> list[IdeChannel]:
