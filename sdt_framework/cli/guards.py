@@ -81,6 +81,8 @@ def os_errors(fallback: str = "") -> Iterator[None]:
     try:
         yield
     except OSError as exc:
+        if isinstance(exc, SDTError):  # an OutputError already says what happened and what to do
+            raise
         raise SDTError(describe_os_error(exc, fallback)) from None
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import typer
@@ -10,6 +11,9 @@ import typer
 from ..errors import SDTError
 from .common import console, print_json, registry, table
 from .guards import os_errors
+
+if TYPE_CHECKING:
+    from ..specs import SensorSpec
 
 app = typer.Typer(help="The twin against real hardware: check and fit.", no_args_is_help=True)
 
@@ -24,11 +28,13 @@ def _load(ctx: typer.Context, pair: Path, sensor: str, axes: str | None, device:
     from dataclasses import replace
 
     from ..twin import load_pair
+    from ..twin.align import require_rate
 
     if not (np.isfinite(reference_scale) and reference_scale > 0):
         raise SDTError(f"--reference-scale {reference_scale}: give a positive finite factor")
     spec = registry(ctx).sensor(sensor)
     chosen = [a.strip().lower() for a in axes.split(",")] if axes else None
+    require_rate(spec)  # before the pair is read: check and fit refuse alike
     with os_errors(str(pair)):
         loaded = load_pair(pair, spec.name, axes=chosen, device_channel=device,
                            reference_channel=reference)  # fmt: skip
@@ -104,7 +110,7 @@ def check(
          f"{p['reference']['rate_hz']:.1f} Hz) -> twin of {spec.name} vs device "
          f"{p['device']['channel']} ({p['device']['part']}), {p['overlap_s']:.1f} s overlap"
          f"{fitted_here}")  # fmt: skip
-    for note in p["notes"]:
+    for note in dict.fromkeys(p["notes"]):  # both channels of one file may carry its note
         _say(f"note: {note}")
     angles = ", ".join(f"{x} {d:.2f} deg" for x, d in zip(loaded.device.axes, a["angles_deg"],
                                                           strict=True))  # fmt: skip
@@ -185,6 +191,7 @@ def fit(
     if out.exists():
         raise SDTError(f"--out {out} exists; choose a new file (nothing is overwritten)")
     check_output_file(out, "--out", [".toml"], [pair])  # suffix, folder, writable: before work
+    name = _profile_name(ctx, name, registry(ctx).sensor(sensor))
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel)
     result = fit_twin(loaded, spec, name)
     with os_errors(str(out)):
@@ -192,3 +199,26 @@ def fit(
     for line in result.provenance:
         _say(line)
     _say(f"wrote {out}: profile {result.profile['name']} (use --sensor-file {out})")
+
+
+def _profile_name(ctx: typer.Context, name: str | None, base: SensorSpec) -> str:
+    """The fitted profile's name: one ``--sensor NAME`` finds again, naming nothing known."""
+    from ..specs import _NAME
+    from ..twin.fit import default_name
+
+    chosen = name if name is not None else default_name(base)
+    shown = repr(chosen if len(chosen) <= 40 else chosen[:39] + "\u2026")
+    if not _NAME.match(chosen):
+        raise SDTError(
+            f"--name {shown}: a profile name is lower-case letters, digits, '.', '_' or '-', "
+            f"starting with a letter or a digit (so that --sensor NAME finds it again); "
+            f"e.g. {default_name(base)}"
+        )
+    try:
+        registry(ctx).sensor(chosen)
+    except SDTError:
+        return chosen
+    raise SDTError(
+        f"--name {shown}: a sensor of that name is already known (built in or loaded); a "
+        f"fitted profile must not shadow it: choose another, e.g. {default_name(base)}"
+    )

@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SDTError
-from .timebase import EVEN_TOLERANCE, measured_rate, on_even_grid
+from .timebase import EVEN_TOLERANCE, measured_rate, on_even_grid, require_one_record
 
 __all__ = [
     "EVEN_TOLERANCE",
@@ -65,6 +65,7 @@ class IdeChannel:
     end_s: float
     rate_hz: float  # slope of the timestamps (least squares)
     median_rate_hz: float  # 1 / median interval
+    time_fault: str | None = None  # why the timestamps are not one record (a gap, a step)
 
     @property
     def parts(self) -> list[str]:
@@ -82,6 +83,7 @@ class IdeChannel:
             "end_s": self.end_s,
             "rate_hz": self.rate_hz,
             "median_rate_hz": self.median_rate_hz,
+            "time_fault": self.time_fault,
             "subchannels": [vars(s) for s in self.subchannels],
         }
 
@@ -132,6 +134,11 @@ def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
     )
     times = data[0] * 1e-6  # microseconds
     rate, median, _, _ = measured_rate(times)
+    try:
+        require_one_record(times, f"channel {channel.id}")
+        fault = None
+    except SDTError as exc:
+        fault = str(exc)
     subs = tuple(
         IdeSubchannel(
             i,
@@ -145,7 +152,7 @@ def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
     )
     start, end = (float(times[0]), float(times[-1])) if len(times) else (0.0, 0.0)
     return IdeChannel(
-        int(channel.id), str(channel.name), subs, len(times), start, end, rate, median
+        int(channel.id), str(channel.name), subs, len(times), start, end, rate, median, fault
     ), data
 
 
