@@ -13,6 +13,7 @@ import os
 
 from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
 from ..errors import SDTError
+from ..inputs import require_regular_file
 from .pair_toml import is_pair_toml, load_toml_pair
 from .signals import Pair, Signal, chosen_axes, digest
 
@@ -65,6 +66,7 @@ def load_pair(
     """The pair at ``path`` for the twin of ``sensor`` (a profile name): an IDE file, or a
     TOML pair file naming two signals (:mod:`.pair_toml`)."""
     path = str(path)
+    require_regular_file(path, "paired recording")  # a device or a pipe, named as such
     if is_pair_toml(path):
         if device_channel is not None or reference_channel is not None:
             raise SDTError(f"{path}: a TOML pair names its signals; channel options are for IDE")

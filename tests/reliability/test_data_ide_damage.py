@@ -70,7 +70,8 @@ def test_a_damaged_ide_file_in_a_manifest_is_skipped_with_the_reason(sdt, tmp_pa
     )
     run = sdt("dataset", "inspect", str(manifest), "--validate")
     assert run.returncode == 0, run.stderr
-    assert "skipped random.IDE: random.IDE: damaged: idelib stopped reading at byte" in run.stdout
+    assert "random.IDE: damaged: idelib stopped reading at byte" in run.stdout
+    assert run.stdout.count("\nskipped ") == 1
     assert "(manifest line 2)" in run.stdout and "0 recordings" in run.stdout
 
 

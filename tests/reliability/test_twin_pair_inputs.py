@@ -202,3 +202,14 @@ def test_a_full_disk_while_writing_the_fitted_profile_says_so(
 def test_dataset_inspect_of_a_pair_file_points_to_twin_check(sdt, tmp_path, signals):
     pair = _write(tmp_path, signals)
     assert "sdt twin check" in _one_error(sdt("dataset", "inspect", str(pair)))
+
+
+@pytest.mark.parametrize(
+    ("path", "words"),
+    [("/dev/zero", "not a regular file (a character device)"), ("dir.toml", "Is a directory")],
+)
+def test_a_pair_path_that_is_not_a_file_says_what_it_is(sdt, tmp_path, path, words):
+    (tmp_path / "dir.toml").mkdir()
+    run = sdt("twin", "check", path if path.startswith("/") else str(tmp_path / path),
+              "--sensor", "adxl345")  # fmt: skip
+    assert words in _one_error(run)
