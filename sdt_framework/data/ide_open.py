@@ -53,16 +53,20 @@ def _require_file(path: Path) -> None:
 
 
 def _import(source: Any) -> tuple[Any | None, list[warnings.WarningMessage]]:
-    """(idelib Dataset or None if the import raised, warnings raised meanwhile)."""
+    """(idelib Dataset, None if not even its header could be read, warnings raised meanwhile).
+    A Dataset whose data raised part-way is marked ``fileDamaged``, as idelib marks the ones
+    it stops reading itself."""
     from idelib.importer import openFile, readData  # heavy: on use only
 
+    doc = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
             doc = openFile(source, quiet=True)
             readData(doc)
         except Exception:  # any failure of the reader: a damaged file
-            return None, list(caught)
+            if doc is not None:
+                doc.fileDamaged = True
     return doc, list(caught)
 
 
@@ -121,7 +125,10 @@ def open_ide(path: str | os.PathLike[str]) -> OpenedIde:
     doc, caught = _import(stream)
     if doc is not None and not doc.fileDamaged:
         return OpenedIde(doc, _notes(caught))
-    stop, seconds = (_stop(doc), _seconds(doc)) if doc is not None else (0, 0.0)
+    try:
+        stop, seconds = (_stop(doc), _seconds(doc)) if doc is not None else (0, 0.0)
+    except Exception:  # a Dataset left half-built by the reader: where it stopped is unknown
+        stop, seconds = 0, 0.0
     stream.close()
     cut = _cut_at(path, size)
     if cut is not None:

@@ -60,6 +60,18 @@ def test_a_damaged_ide_file_is_refused_naming_where_reading_stopped(
     assert first_damage < _stop_byte(run.stderr) < SIZE
 
 
+def test_bytes_missing_inside_a_block_or_no_ide_at_all_are_refused(sdt, tmp_path):
+    """399 bytes cut out of a data block that starts at byte 398,341: idelib reads the
+    block's declared size into the next element and stops there; and a text file."""
+    data = (DATA / "SSX66115.IDE").read_bytes()
+    (tmp_path / "gap.IDE").write_bytes(data[: 398_341 + 2000] + data[398_341 + 2399 :])
+    err = sdt("dataset", "inspect", str(tmp_path / "gap.IDE")).stderr
+    assert "damaged" in err and 398_341 + 2000 < _stop_byte(err) < SIZE - 399, err
+    (tmp_path / "text.IDE").write_bytes(b"hello world\n" * 100)
+    run = sdt("dataset", "inspect", str(tmp_path / "text.IDE"))
+    assert run.returncode == 2 and "not a readable enDAQ IDE file" in run.stderr, run.stderr
+
+
 def test_a_damaged_ide_file_in_a_manifest_is_skipped_with_the_reason(sdt, tmp_path):
     _damaged(tmp_path, "random")
     manifest = tmp_path / "m.csv"
