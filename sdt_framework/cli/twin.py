@@ -208,11 +208,12 @@ def _profile_name(ctx: typer.Context, name: str | None, base: SensorSpec) -> str
 
     chosen = name if name is not None else default_name(base)
     shown = repr(chosen if len(chosen) <= 40 else chosen[:39] + "\u2026")
-    if not _NAME.match(chosen):
+    other = default_name(base) + ("-2" if chosen == default_name(base) else "")
+    if not _NAME.fullmatch(chosen):
         raise SDTError(
             f"--name {shown}: a profile name is lower-case letters, digits, '.', '_' or '-', "
             f"starting with a letter or a digit (so that --sensor NAME finds it again); "
-            f"e.g. {default_name(base)}"
+            f"e.g. {other}"
         )
     try:
         registry(ctx).sensor(chosen)
@@ -220,5 +221,5 @@ def _profile_name(ctx: typer.Context, name: str | None, base: SensorSpec) -> str
         return chosen
     raise SDTError(
         f"--name {shown}: a sensor of that name is already known (built in or loaded); a "
-        f"fitted profile must not shadow it: choose another, e.g. {default_name(base)}"
+        f"fitted profile must not shadow it: choose another, e.g. {other}"
     )
