@@ -194,7 +194,8 @@ def test_a_full_disk_while_writing_the_fitted_profile_says_so(
     code, _, err = sdt_main("twin", "fit", str(pair), "--sensor", "adxl345", "--out",
                             str(tmp_path / "fitted.toml"))  # fmt: skip
     assert code == 2 and err.startswith("error:") and err.count("\n") == 1, err
-    assert "No space left on device" in err and "outputerror" not in err
+    assert "fitted.toml: no space left on device; the disk is full" in err
+    assert "outputerror" not in err
     assert not (tmp_path / "fitted.toml").exists()
     assert not [p for p in tmp_path.iterdir() if p.name.endswith(".tmp")]
 
