@@ -134,3 +134,21 @@ def test_non_ascii_channel_names_give_one_note_not_a_raw_warning(sdt, tmp_path):
     assert "UnicodeWarning" not in run.stderr and "ebmlite" not in run.stderr
     assert run.stderr.count("note: some names in the file are not ASCII text") == 1
     assert "M\ufffdin Acceleration" in run.stdout
+
+
+def test_a_channel_holding_nan_is_refused_naming_its_first_sample():
+    """What idelib returns for damaged sample bytes it did not stop at (channel 59 of the
+    randomly damaged file holds one NaN): the first bad sample and its time are named."""
+    from sdt_framework.data.ide import _require_finite
+    from sdt_framework.errors import SDTError
+
+    times = np.arange(100) / 3134.0
+    values = np.zeros((3, 100))
+    values[1, 7] = np.nan
+    values[2, 40] = np.inf
+    with pytest.raises(SDTError) as caught:
+        _require_finite("f.IDE", 32, times, values)
+    assert str(caught.value) == (
+        f"f.IDE: channel 32, sample 7 (at {7 / 3134:.4f} s): 2 non-finite value(s); "
+        f"the file is damaged there"
+    )
