@@ -167,6 +167,12 @@ def inspect(
     if is_ide(path_or_name):
         _inspect_ide(path_or_name, as_json)
         return
+    if Path(path_or_name).suffix.lower() == ".toml":
+        raise SDTError(
+            f"{path_or_name}: a .toml file is not a dataset; a pair file (a reference and a "
+            f"device) is read by `sdt twin check {path_or_name} --sensor NAME`; a dataset is a "
+            f"folder, a manifest .csv/.parquet, an .IDE file or a registered name"
+        )
 
     with os_errors(path_or_name):
         dataset = open_dataset(registry(ctx), path_or_name)
@@ -222,11 +228,17 @@ def inspect(
 
 def _inspect_ide(path: str, as_json: bool) -> None:
     """Channels of an IDE file: parts, axes, units, samples, measured and median rates."""
-    from ..data.ide import inspect_ide
+    from ..data.ide import read_channels
     from .guards import os_errors
 
     with os_errors(path):
-        channels = inspect_ide(path)
+        channels, notes = read_channels(path)
+    for note in notes:
+        err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
+    for channel in channels:  # shown, and refused when the channel is read
+        if channel.time_fault:
+            err_console.print(f"warning: {channel.time_fault}", markup=False, highlight=False,
+                              soft_wrap=True)  # fmt: skip
     if as_json:
         print_json([c.as_dict() for c in channels])
         return

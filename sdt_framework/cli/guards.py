@@ -83,7 +83,8 @@ def _shown(filename: object) -> str:
 def describe_os_error(exc: OSError, fallback: str = "") -> str:
     """One line for an OS error: the path, what happened, what to do."""
     path = _shown(exc.filename) if exc.filename is not None else fallback
-    what = (exc.strerror or type(exc).__name__).lower()
+    known = os.strerror(exc.errno) if exc.errno else type(exc).__name__  # an OutputError
+    what = (exc.strerror or known).lower()
     advice = _ADVICE.get(exc.errno or 0, "check the path and try again")
     return f"{path or '(no path)'}: {what}; {advice}"
 

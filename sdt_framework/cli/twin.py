@@ -3,12 +3,16 @@
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import typer
 
 from ..errors import SDTError
 from .common import console, print_json, registry, table
 from .guards import OVERWRITE_HELP, os_errors
+
+if TYPE_CHECKING:
+    from ..specs import SensorSpec
 
 app = typer.Typer(help="The twin against real hardware: check and fit.", no_args_is_help=True)
 
@@ -23,11 +27,13 @@ def _load(ctx: typer.Context, pair: Path, sensor: str, axes: str | None, device:
     from dataclasses import replace
 
     from ..twin import load_pair
+    from ..twin.align import require_rate
     from ..twin.check import check_reference_scale
 
     check_reference_scale(reference_scale)
     spec = registry(ctx).sensor(sensor)
     chosen = [a.strip().lower() for a in axes.split(",")] if axes else None
+    require_rate(spec)  # before the pair is read: check and fit refuse alike
     with os_errors(str(pair)):
         loaded = load_pair(pair, spec.name, axes=chosen, device_channel=device,
                            reference_channel=reference)  # fmt: skip
@@ -108,7 +114,7 @@ def check(
          f"{p['reference']['rate_hz']:.1f} Hz) -> twin of {spec.name} vs device "
          f"{p['device']['channel']} ({p['device']['part']}), {p['overlap_s']:.1f} s overlap"
          f"{fitted_here}")  # fmt: skip
-    for note in p["notes"]:
+    for note in dict.fromkeys(p["notes"]):  # both channels of one file may carry its note
         _say(f"note: {note}")
     angles = ", ".join(f"{x} {d:.2f} deg" for x, d in zip(loaded.device.axes, a["angles_deg"],
                                                           strict=True))  # fmt: skip
@@ -188,6 +194,7 @@ def fit(
     from .guards import check_output_file
 
     check_output_file(out, "--out", [".toml"], [pair], overwrite=overwrite)  # before work
+    name = _profile_name(ctx, name, registry(ctx).sensor(sensor))
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel)
     result = fit_twin(loaded, spec, name)
     with os_errors(str(out)):
@@ -195,3 +202,27 @@ def fit(
     for line in result.provenance:
         _say(line)
     _say(f"wrote {out}: profile {result.profile['name']} (use --sensor-file {out})")
+
+
+def _profile_name(ctx: typer.Context, name: str | None, base: SensorSpec) -> str:
+    """The fitted profile's name: one ``--sensor NAME`` finds again, naming nothing known."""
+    from ..specs import _NAME
+    from ..twin.fit import default_name
+
+    chosen = name if name is not None else default_name(base)
+    shown = repr(chosen if len(chosen) <= 40 else chosen[:39] + "\u2026")
+    other = default_name(base) + ("-2" if chosen == default_name(base) else "")
+    if not _NAME.fullmatch(chosen):
+        raise SDTError(
+            f"--name {shown}: a profile name is lower-case letters, digits, '.', '_' or '-', "
+            f"starting with a letter or a digit (so that --sensor NAME finds it again); "
+            f"e.g. {other}"
+        )
+    try:
+        registry(ctx).sensor(chosen)
+    except SDTError:
+        return chosen
+    raise SDTError(
+        f"--name {shown}: a sensor of that name is already known (built in or loaded); a "
+        f"fitted profile must not shadow it: choose another, e.g. {other}"
+    )

@@ -23,7 +23,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SDTError
-from .timebase import EVEN_TOLERANCE, measured_rate, on_even_grid
+from .timebase import EVEN_TOLERANCE, measured_rate, on_even_grid, require_one_record
 
 __all__ = [
     "EVEN_TOLERANCE",
@@ -35,6 +35,7 @@ __all__ = [
     "is_ide",
     "matches_part",
     "part_channel",
+    "read_channels",
     "read_ide",
     "read_variable",
 ]
@@ -64,6 +65,7 @@ class IdeChannel:
     end_s: float
     rate_hz: float  # slope of the timestamps (least squares)
     median_rate_hz: float  # 1 / median interval
+    time_fault: str | None = None  # why the timestamps are not one record (a gap, a step)
 
     @property
     def parts(self) -> list[str]:
@@ -81,6 +83,7 @@ class IdeChannel:
             "end_s": self.end_s,
             "rate_hz": self.rate_hz,
             "median_rate_hz": self.median_rate_hz,
+            "time_fault": self.time_fault,
             "subchannels": [vars(s) for s in self.subchannels],
         }
 
@@ -110,18 +113,10 @@ def is_ide(path: str | os.PathLike[str]) -> bool:
 
 
 def _open(path: str | os.PathLike[str]) -> Any:
-    import idelib  # heavy: on use only
+    """The imported file (:func:`.ide_open.open_ide`: a damaged file is refused)."""
+    from .ide_open import open_ide
 
-    path = Path(path)
-    if not path.is_file():
-        raise SDTError(f"{path}: no such IDE file; check the path")
-    try:
-        return idelib.importFile(str(path))
-    except Exception as exc:
-        raise SDTError(
-            f"{path}: not a readable enDAQ IDE file ({type(exc).__name__}); give a .IDE "
-            f"recording written by an enDAQ or Slam Stick recorder"
-        ) from None
+    return open_ide(path)
 
 
 def _axis(name: str) -> str | None:
@@ -139,6 +134,11 @@ def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
     )
     times = data[0] * 1e-6  # microseconds
     rate, median, _, _ = measured_rate(times)
+    try:
+        require_one_record(times, f"channel {channel.id}")
+        fault = None
+    except SDTError as exc:
+        fault = str(exc)
     subs = tuple(
         IdeSubchannel(
             i,
@@ -152,17 +152,23 @@ def _describe(channel: Any) -> tuple[IdeChannel, np.ndarray]:
     )
     start, end = (float(times[0]), float(times[-1])) if len(times) else (0.0, 0.0)
     return IdeChannel(
-        int(channel.id), str(channel.name), subs, len(times), start, end, rate, median
+        int(channel.id), str(channel.name), subs, len(times), start, end, rate, median, fault
     ), data
 
 
 def inspect_ide(path: str | os.PathLike[str]) -> list[IdeChannel]:
     """Every channel of the IDE file at ``path``, in id order."""
-    doc = _open(path)
+    return read_channels(path)[0]
+
+
+def read_channels(path: str | os.PathLike[str]) -> tuple[list[IdeChannel], tuple[str, ...]]:
+    """(every channel of the IDE file at ``path`` in id order, notes on how it was read)."""
+    opened = _open(path)
     try:
-        return [_describe(doc.channels[cid])[0] for cid in sorted(doc.channels)]
+        doc = opened.doc
+        return [_describe(doc.channels[cid])[0] for cid in sorted(doc.channels)], opened.notes
     finally:
-        doc.close()
+        opened.doc.close()
 
 
 def read_ide(
@@ -172,7 +178,8 @@ def read_ide(
 ) -> IdeSignal:
     """Samples of ``channel`` (by id), its ``subchannels`` (axes ``x``/``y``/``z`` or names;
     default every one), on an even time grid at the measured rate."""
-    doc = _open(path)
+    opened = _open(path)
+    doc = opened.doc
     try:
         if channel not in doc.channels:
             found = ", ".join(f"{c} ({doc.channels[c].name})" for c in sorted(doc.channels))
@@ -196,9 +203,23 @@ def read_ide(
         raise SDTError(f"{path}: channel {channel} holds {info.samples} samples; nothing to read")
     times = data[0] * 1e-6
     values = data[[1 + s.index for s in chosen]]
+    _require_finite(path, channel, times, values)
     even = on_even_grid(times, values, f"{Path(path).name} channel {channel}")
+    note = "; ".join(filter(None, (*opened.notes, even.note))) or None
     return IdeSignal(str(path), info, tuple(chosen), even.start_s, even.rate_hz, even.values,
-                     even.note, even.rate_sd_hz)  # fmt: skip
+                     note, even.rate_sd_hz)  # fmt: skip
+
+
+def _require_finite(path: str | os.PathLike[str], channel: int, times: np.ndarray,
+                    values: np.ndarray) -> None:  # fmt: skip
+    """Refuse a channel holding a NaN or infinite sample (idelib's reading of damaged bytes)."""
+    bad = ~np.isfinite(values).all(axis=0) | ~np.isfinite(times)
+    if bad.any():
+        first = int(np.argmax(bad))
+        raise SDTError(
+            f"{path}: channel {channel}, sample {first} (at {times[first]:.4f} s): "
+            f"{int(bad.sum())} non-finite value(s); the file is damaged there"
+        )
 
 
 def accelerometers(channels: list[IdeChannel]) -> list[IdeChannel]:

@@ -38,10 +38,11 @@ import numpy as np
 from scipy import ndimage, signal
 
 from ..chain import degrade
+from ..errors import SDTError
 from ..specs import SensorSpec
 from .pair import Pair
 
-__all__ = ["ACTIVE_SHARE", "MIN_CORRELATION", "Alignment", "align", "at_rate"]
+__all__ = ["ACTIVE_SHARE", "MIN_CORRELATION", "Alignment", "align", "at_rate", "require_rate"]
 
 #: a twin axis whose spread is at least this share of the largest one determines its column
 ACTIVE_SHARE = 0.1
@@ -73,6 +74,17 @@ class Alignment:
         """Angle between each twin axis and the device axis it maps to, degrees."""
         diagonal = np.clip(np.abs(np.diag(self.rotation)), 0.0, 1.0)
         return [float(np.degrees(np.arccos(v))) for v in diagonal]
+
+
+def require_rate(sensor: SensorSpec) -> None:
+    """Refuse a sensor without an output rate of its own (``native-reference``: a reference
+    chain samples at the recording's rate, so there is no device clock to compare)."""
+    if not isinstance(sensor.sampling_rate_hz, float):
+        raise SDTError(
+            f"--sensor {sensor.name}: samples at the recording's own rate "
+            f"({sensor.sampling_rate_hz!r}), so it has no twin of a device to check or fit; "
+            f"give the profile of the device's part (e.g. adxl345)"
+        )
 
 
 def at_rate(sensor: SensorSpec, rate_hz: float) -> SensorSpec:
@@ -129,6 +141,7 @@ def _rotation(columns: np.ndarray, active: np.ndarray, n: int) -> np.ndarray:
 
 def align(pair: Pair, sensor: SensorSpec, seed: int = 0) -> Alignment:
     """Run the reference through ``sensor``'s twin at the device's rate and align it."""
+    require_rate(sensor)
     ref, dev = pair.reference, pair.device
     clocked = at_rate(sensor, dev.rate_hz)
     rows = [

@@ -30,6 +30,7 @@ axis alignment (the mounting's, not the part's: reported by ``check``).
 from __future__ import annotations
 
 import datetime as dt
+import re
 from dataclasses import dataclass
 from typing import Any
 
@@ -43,10 +44,15 @@ from .check import CheckResult, check_twin
 from .fit_corner import fit_corner
 from .pair import Pair
 
-__all__ = ["MIN_BANDS", "FitResult", "fit_twin", "profile_toml"]
+__all__ = ["MIN_BANDS", "SCALE_RANGE", "FitResult", "default_name", "fit_twin", "profile_toml"]
 
 #: judgeable bands needed on one axis before a gain is fitted
 MIN_BANDS = 3
+#: a fitted gain (device / twin) outside this range is no part's sensitivity error
+SCALE_RANGE = (0.5, 2.0)
+#: unit mix-ups a gain far from 1 points at: ratio -> what the device's values probably are
+UNIT_RATIOS = {1000.0: "in mg, declared as g", 9.80665: "in m/s^2, declared as g",
+               1e-3: "in g, declared as mg", 1 / 9.80665: "in g, declared as m/s^2"}  # fmt: skip
 
 
 @dataclass
@@ -119,6 +125,30 @@ def _gain(pair: Pair, check: CheckResult) -> tuple[dict[str, Any] | None, str]:
     }, ""  # fmt: skip
 
 
+def default_name(base: SensorSpec) -> str:
+    """``NAME-fitted`` for a base profile, a part's mode spelt without brackets (a profile
+    named ``adxl355[odr=4000]-fitted`` could not be asked for again by name)."""
+    return re.sub(r"[^a-z0-9._-]+", "-", base.name).strip("-") + "-fitted"
+
+
+def _plausible(gain: dict[str, Any], pair: Pair) -> None:
+    """Refuse a fitted scale no part has (a device in other units than declared)."""
+    ratio = 1 + gain["value"] / 100
+    lo, hi = SCALE_RANGE
+    if lo <= ratio <= hi:
+        return
+    near = min(UNIT_RATIOS, key=lambda r: abs(np.log(max(ratio, 1e-300) / r)))
+    hint = (
+        f"; the device's values look {UNIT_RATIOS[near]} (fix its units)"
+        if ratio > 0 and abs(np.log(ratio / near)) < np.log(1.2)
+        else "; check the device's and the reference's units"
+    )
+    raise SDTError(
+        f"{pair.name}: the fitted scale error is {gain['value']:+,.0f} % (device / twin = "
+        f"{ratio:.4g}), outside a part's plausible {lo:g}x to {hi:g}x{hint}"
+    )
+
+
 def fit_twin(pair: Pair, base: SensorSpec, name: str | None = None) -> FitResult:
     """Fit ``base``'s twin to ``pair``; the result's profile runs like any sensor file."""
     if not isinstance(base.sampling_rate_hz, float) or not base.inject_noise:
@@ -163,12 +193,13 @@ def fit_twin(pair: Pair, base: SensorSpec, name: str | None = None) -> FitResult
     if gain is None:
         kept["scale"] = why
     else:
+        _plausible(gain, pair)
         fitted["scale_error_pct"] = gain
         stages.append({"name": "scale", "params": {"error_pct": round(gain["value"], 3)}})
     clocked = at_rate(base, fitted["sampling_rate_hz"]["value"])
     table = {k: v for k, v in base.content_dict().items() if v is not None}
     table.update(
-        name=name or f"{base.name}-fitted",
+        name=name or default_name(base),
         description=f"{base.description} (fitted on {pair.name})",
         source=f"sdt twin fit: {pair.name} (sha256 {pair.digest}), {pair.reference.label} -> "
         f"{pair.device.label}, {dt.date.today().isoformat()}; base profile {base.name}",

@@ -13,6 +13,7 @@ import os
 
 from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
 from ..errors import SDTError
+from ..inputs import require_regular_file
 from .pair_toml import is_pair_toml, load_toml_pair
 from .signals import Pair, Signal, chosen_axes, digest
 
@@ -65,6 +66,7 @@ def load_pair(
     """The pair at ``path`` for the twin of ``sensor`` (a profile name): an IDE file, or a
     TOML pair file naming two signals (:mod:`.pair_toml`)."""
     path = str(path)
+    require_regular_file(path, "paired recording")  # a device or a pipe, named as such
     if is_pair_toml(path):
         if device_channel is not None or reference_channel is not None:
             raise SDTError(f"{path}: a TOML pair names its signals; channel options are for IDE")
@@ -87,18 +89,46 @@ def load_pair(
     )
 
 
+#: the rates a pair's signals may have: the first third-octave band (10 Hz) needs 25 Hz
+RATE_RANGE_HZ = (25.0, 1e7)
+#: the two sides of one recording last about as long: a larger ratio is a unit mistake
+DURATION_RATIO = 10.0
+
+
+def _span(signal: Signal) -> str:
+    n, rate = signal.values.shape[1], signal.rate_hz
+    return f"{signal.label} holds {n:,} samples at {rate:.6g} Hz, {n / rate:.4g} s"
+
+
 def _checked(pair: Pair) -> Pair:
-    """``pair`` if the reference is faster than the device and they overlap at least 1 s."""
-    path = pair.path
-    if pair.reference.rate_hz <= pair.device.rate_hz:
+    """``pair`` if the reference is faster than the device, the two sides last about as long,
+    their rates are plausible and they overlap at least 1 s (one check for ``twin check``
+    and ``twin fit``, IDE files and TOML pairs alike)."""
+    path, ref, dev = pair.path, pair.reference, pair.device
+    if ref.rate_hz <= dev.rate_hz:
         raise SDTError(
-            f"{path}: the reference ({pair.reference.label}, {pair.reference.rate_hz:.0f} Hz) "
-            f"is not faster than the device ({pair.device.label}, "
-            f"{pair.device.rate_hz:.0f} Hz); a twin needs a reference sampled above the "
-            f"device's rate"
+            f"{path}: the reference ({ref.label}, {ref.rate_hz:.6g} Hz) is not faster than "
+            f"the device ({dev.label}, {dev.rate_hz:.6g} Hz); a twin needs a reference "
+            f"sampled above the device's rate"
         )
-    start = max(pair.reference.start_s, pair.device.start_s)
-    end = min(pair.reference.end_s, pair.device.end_s)
+    lasts = [s.values.shape[1] / s.rate_hz for s in (ref, dev)]
+    ratio = max(lasts) / min(lasts) if min(lasts) > 0 else float("inf")
+    if not ratio <= DURATION_RATIO:
+        raise SDTError(
+            f"{path}: {_span(ref)}; {_span(dev)}: one recording's two sides differ "
+            f"{ratio:.4g}-fold in length; a time column in ms or a rate_hz in kHz? (time "
+            f"columns are in s, rate_hz in Hz)"
+        )
+    lo, hi = RATE_RANGE_HZ
+    for side in (ref, dev):
+        if not lo <= side.rate_hz <= hi:
+            raise SDTError(
+                f"{path}: {side.label} runs at {side.rate_hz:.6g} Hz, outside {lo:g} Hz to "
+                f"{hi:.0e} Hz (the twin's bands start at 10 Hz); time columns are in s, "
+                f"rate_hz in Hz"
+            )
+    start = max(ref.start_s, dev.start_s)
+    end = min(ref.end_s, dev.end_s)
     if end - start < 1.0:
         raise SDTError(
             f"{path}: the reference and the device overlap for {max(end - start, 0):.2f} s "

@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, PositiveFloat, model_validator
+from pydantic import BaseModel, ConfigDict, Field, FiniteFloat, model_validator
 
 from ..data.csv_signal import read_csv_signal
 from ..data.recording import DataFileError
@@ -40,6 +40,8 @@ from .signals import Pair, Signal, chosen_axes, digest
 
 __all__ = ["PairSignal", "is_pair_toml", "load_toml_pair"]
 
+#: a part name is printed up to this many characters
+PART_CHARACTERS = 60
 #: multiply by this to get g (standard gravity for m/s^2, ISO 80000-3)
 TO_G = {"g": 1.0, "mg": 1e-3, "m/s^2": 1 / 9.80665}
 
@@ -54,8 +56,8 @@ class PairSignal(BaseModel):
     columns: list[str] | None = None
     variable: str | None = None
     time_column: str | None = None
-    rate_hz: PositiveFloat | None = None
-    start_s: float = 0.0
+    rate_hz: FiniteFloat | None = Field(None, gt=0)
+    start_s: FiniteFloat = 0.0
     units: Literal["g", "mg", "m/s^2"] = "g"
     part: str | None = None
 
@@ -67,6 +69,15 @@ class PairSignal(BaseModel):
             raise ValueError(f"axes {self.axes} name an axis twice")
         if self.columns is not None and len(self.columns) != len(self.axes):
             raise ValueError(f"{len(self.columns)} columns for {len(self.axes)} axes")
+        columns = self.columns or []
+        twice = [c for c in dict.fromkeys(columns) if columns.count(c) > 1]
+        if twice:
+            raise ValueError(f"columns name {_short(twice[0])} twice; name one column per axis")
+        if self.time_column is not None and self.time_column in columns:
+            raise ValueError(
+                f"time_column {_short(self.time_column)} is also among columns; the time is "
+                f"not an axis"
+            )
         csv = self.file.lower().endswith(".csv")
         if not csv and (self.columns or self.time_column):
             raise ValueError("columns and time_column are for CSV files (give rate_hz)")
@@ -78,6 +89,16 @@ class _PairFile(BaseModel):
 
     reference: PairSignal
     device: PairSignal
+
+
+def _cut(text: str, limit: int = PART_CHARACTERS) -> str:
+    """``text`` cut to ``limit`` characters (a 100 kB name is not echoed whole)."""
+    return text if len(text) <= limit else text[: limit - 1] + "\u2026"
+
+
+def _short(text: str) -> str:
+    """``text`` cut and quoted, for a message."""
+    return repr(_cut(text))
 
 
 def is_pair_toml(path: str | Path) -> bool:
@@ -113,6 +134,8 @@ def _signal(folder: Path, side: str, spec: PairSignal) -> Signal:
     values, times = _samples(folder, side, spec)
     values = values * TO_G[spec.units]
     label = f"[{side}] {spec.file}"
+    if spec.part is not None:
+        spec = spec.model_copy(update={"part": _cut(spec.part)})
     if times is None:
         return Signal(label, spec.part, tuple(spec.axes), values, float(spec.rate_hz or 0),
                       spec.start_s)  # fmt: skip
@@ -121,7 +144,7 @@ def _signal(folder: Path, side: str, spec: PairSignal) -> Signal:
             f"{folder / spec.file}: [{side}] time_column {spec.time_column!r} must give one "
             f"strictly increasing time (s) per sample"
         )
-    even = on_even_grid(times, values, label)
+    even = on_even_grid(times, values, f"{folder / spec.file} [{side}]")
     return Signal(label, spec.part, tuple(spec.axes), even.values, even.rate_hz,
                   even.start_s + spec.start_s, even.note, even.rate_sd_hz)  # fmt: skip
 

@@ -76,6 +76,12 @@ def chosen_axes(
     both = set(reference) & set(device)
     common = [a for a in "xyz" if a in both]
     chosen = axes or common
+    twice = [a for a in dict.fromkeys(chosen) if chosen.count(a) > 1]
+    if twice:
+        raise SDTError(
+            f"{path}: axes {','.join(chosen)} name axis {twice[0]!r} twice; name each axis "
+            f"once (a repeated axis would be compared, and its bands counted, twice)"
+        )
     missing = [a for a in chosen if a not in common]
     if missing or not chosen:
         raise SDTError(
