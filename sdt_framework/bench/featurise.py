@@ -37,7 +37,7 @@ from ..data.recording import Recording
 from ..features import extract
 from ..seeding import derive_seed
 from ..specs import FeatureSetSpec, SensorSpec
-from ..stages import draw_unit, has_tolerances, is_random, uses_node
+from ..stages import StageSpec, draw_unit, has_tolerances, is_random, uses_node
 from .feature_cache import CachedBlock, ChecksumMismatchError, read_entry, write_entry
 
 __all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurise_recording", "noise_seed"]
@@ -85,6 +85,9 @@ class FeatureJob:
     axis: str = "x"  # the sensor axis this recording's channel is mounted on
     units: int | None = None  # physical units per sensor (None: the nominal profile only)
     node: tuple[Recording, ...] = ()  # the triaxial node's other two axes (for cross-axis)
+    #: the specs of the stages the sensors' tolerances name, which a drawn unit adds and binds
+    #: here: a worker process has no registry of its own
+    stages: tuple[StageSpec, ...] = ()
 
 
 def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) -> int | None:
@@ -169,8 +172,9 @@ def _variants(job: FeatureJob) -> list[tuple[SensorSpec, int]]:
     """
     if job.units is None:
         return [(named.for_axis(job.axis), -1) for named in job.sensors]
+    table = {spec.name: spec for spec in job.stages}
     return [
-        (draw_unit(named, job.seed, unit).for_axis(job.axis), unit)
+        (draw_unit(named, job.seed, unit, table).for_axis(job.axis), unit)
         for named in job.sensors
         for unit in range(job.units)
         if unit == 0 or has_tolerances(named)

@@ -166,6 +166,7 @@ def run_benchmark(
             config.axes.get(r.channel, "x"),
             config.units,
             plan.nodes.get(r.recording_id, ()),
+            tuple(plan.stages.values()),
         )
         for r in plan.recordings
     ]
