@@ -24,6 +24,7 @@ __all__ = [
     "InternalError",
     "PluginLoadError",
     "SDTError",
+    "SDTWarning",
     "SpecFileError",
     "UnknownNameError",
     "UserInterruptError",
@@ -52,6 +53,10 @@ class InternalError(RuntimeError):
     Deliberately not an :class:`SDTError`, so no handler of user errors takes
     it for one; the CLI exits with :data:`INTERNAL_EXIT`.
     """
+
+
+class SDTWarning(UserWarning):
+    """A problem sdt worked around (a cache entry recomputed): one ``warning:`` line in the CLI."""
 
 
 class UserInterruptError(SDTError):

@@ -25,6 +25,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -32,7 +33,7 @@ import numpy as np
 
 from ..chain import compile_chain
 from ..chain.shared import SharedPrefix, prefix_key
-from ..data.cache import CORRUPT_ENTRY_ERRORS
+from ..data.cache import CORRUPT_ENTRY_ERRORS, CacheEntryWarning
 from ..data.recording import Recording
 from ..features import extract
 from ..seeding import derive_seed
@@ -145,6 +146,23 @@ def _open(job: FeatureJob) -> SharedPrefix:
     return SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label, other_axes=others)
 
 
+def _open_noting(job: FeatureJob, notes: list[str]) -> SharedPrefix:
+    """:func:`_open`, with the cache entries discarded on the way added to ``notes``.
+
+    A worker's warnings would reach only its own stderr (raw, with a source
+    line) or a Dask worker's log; as notes they reach the user as one line.
+    """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", CacheEntryWarning)
+        shared = _open(job)
+    for item in caught:
+        if issubclass(item.category, CacheEntryWarning):
+            notes.append(str(item.message))
+        else:  # not ours to reword: issued again as it was
+            warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
+    return shared
+
+
 def _other_axes(job: FeatureJob) -> list[str]:
     """The node's other two axes, in the order of ``job.node``."""
     return sorted({"x", "y", "z"} - {job.axis})
@@ -231,7 +249,7 @@ def featurise_recording(job: FeatureJob) -> RecordingFeatures:
                     path.unlink(missing_ok=True)
             if arrays is None:
                 if shared is None:
-                    shared = _open(job)
+                    shared = _open_noting(job, out.notes)
                 arrays = _compute(shared, job, sensor, chain_seed)
                 source = "computed"
                 if path is not None:

@@ -28,14 +28,15 @@ import os
 import shlex
 import sys
 import traceback
+import warnings
 from collections.abc import Callable
 from typing import Any, NoReturn
 
 import click
 from typer.core import TyperGroup
 
-from ..errors import INTERNAL_EXIT, SDTError, UserInterruptError, one_line
-from .common import print_error
+from ..errors import INTERNAL_EXIT, SDTError, SDTWarning, UserInterruptError, one_line
+from .common import print_error, warn
 
 __all__ = [
     "ENV_DEBUG",
@@ -131,8 +132,41 @@ class InterruptibleGroup(TyperGroup):
             raise _interrupt(exc) from exc
 
 
+def _show_warning_line(show: Callable[..., None]) -> Callable[..., None]:
+    """``warnings.showwarning`` printing sdt's own warnings as one ``warning:`` line.
+
+    An :class:`~sdt_framework.errors.SDTWarning` (a cache entry recomputed) is
+    news for the user, not a Python diagnostic: no source file and line.
+    Other warnings go to ``show``, Python's own display.
+    """
+
+    def display(
+        message: Warning | str,
+        category: type[Warning],
+        filename: str,
+        lineno: int,
+        file: Any = None,
+        line: str | None = None,
+    ) -> None:
+        if issubclass(category, SDTWarning):
+            warn(one_line(message, 2000))
+        else:
+            show(message, category, filename, lineno, file, line)
+
+    return display
+
+
 def run(app: Callable[[], Any]) -> None:
     """Call ``app`` and turn the errors above into one line and an exit status."""
+    previous = warnings.showwarning
+    warnings.showwarning = _show_warning_line(previous)
+    try:
+        _run(app)
+    finally:
+        warnings.showwarning = previous
+
+
+def _run(app: Callable[[], Any]) -> None:
     try:
         app()
     except UserInterruptError as exc:
