@@ -54,6 +54,7 @@ from ..stages import has_tolerances
 from .plan import Plan
 
 __all__ = [
+    "ASSUMES",
     "CONFIRM_ABOVE_SECONDS",
     "FEATURE_SECONDS_PER_MSAMPLE",
     "RUN_SECONDS",
@@ -65,6 +66,11 @@ __all__ = [
     "unfit",
 ]
 
+#: What every printed estimate rests on, said beside it (a loaded machine took 10x longer).
+ASSUMES = (
+    "single-thread times measured on an idle 2-core reference machine; a loaded or slower "
+    "machine takes longer, a warm feature cache less"
+)
 #: A benchmark estimated to take longer than this needs ``--yes`` to start.
 CONFIRM_ABOVE_SECONDS = 3600.0
 #: Chain + features, seconds per million input samples per draw (one thread).

@@ -249,7 +249,7 @@ def benchmark(
 
 def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: list[bool]) -> bool:
     """Plan, check the size, run, write; True if some classifier failed in all its runs."""
-    from ..bench.estimate import CONFIRM_ABOVE_SECONDS
+    from ..bench.estimate import ASSUMES
     from ..bench.output import write_outputs
     from ..bench.runner import plan_benchmark, preflight, run_benchmark
     from ..bench.saturation import saturation_lines, saturation_summary
@@ -273,8 +273,7 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
         highlight=False,
         soft_wrap=True,
     )
-    if size.seconds > CONFIRM_ABOVE_SECONDS:
-        _say("note:", "yellow", f"this benchmark is {size.line()}")
+    _say("note:", "yellow", f"this benchmark is {size.line()} ({ASSUMES})")
     from ..data.sizes import building
 
     reduce = "process less data at once (shorter or fewer recordings, fewer --jobs)"
