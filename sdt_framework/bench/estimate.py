@@ -63,6 +63,7 @@ __all__ = [
     "estimate",
     "estimate_like",
     "memory_problem",
+    "recording_problem",
     "unfit",
 ]
 
@@ -245,6 +246,36 @@ def memory_problem(size: Estimate) -> str | None:
     return (
         f"needs about {human_bytes(size.memory_bytes)} of memory, more than the "
         f"{human_bytes(room)} available"
+    )
+
+
+def recording_problem(plan: Plan, size: Estimate) -> str | None:
+    """Why the plan's largest recording alone cannot be processed here (naming its file), or None.
+
+    When the part of the memory that no setting but the data changes (each
+    process running a chain on the largest recording) is more than is
+    available, fewer repetitions, sensors or classifiers cannot help: the
+    recording is named with its file's size, and what would.
+    """
+    room = host.available_memory()
+    if size.fixed_bytes <= room or not plan.recordings:
+        return None
+    largest = max(plan.recordings, key=lambda r: r.n_acquisitions * r.samples_per_acquisition)
+    samples = largest.n_acquisitions * largest.samples_per_acquisition
+    try:
+        on_disk = f", {human_bytes(os.stat(largest.source).st_size)}"
+    except (OSError, ValueError):  # generated data: no file
+        on_disk = ""
+    one = PROCESS_BYTES + CHAIN_BYTES_PER_SAMPLE * samples
+    fewer = ""
+    if size.workers > 1 and one <= room:
+        fewer = f", or use --jobs 1 (one process needs about {human_bytes(one)})"
+    return (
+        f"recording {largest.recording_id} ({largest.source}{on_disk}) is {samples:,} samples; "
+        f"running it through a sensor chain needs about "
+        f"{human_bytes(CHAIN_BYTES_PER_SAMPLE * samples)} of memory in each of {size.workers} "
+        f"process{'es' if size.workers > 1 else ''}, more than the {human_bytes(room)} "
+        f"available; split it into shorter recordings{fewer}"
     )
 
 

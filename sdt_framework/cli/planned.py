@@ -59,6 +59,9 @@ def check_size(
 ) -> Estimate:
     """The plan's estimate, checked by :func:`check_estimate` (``--units`` named when set)."""
     size = sizes.estimate(plan, stored_runs=stored_runs(out_dir))
+    problem = sizes.recording_problem(plan, size)
+    if problem is not None:  # the data itself, not the amount of work asked for
+        raise SDTError(f"this {what} cannot run: {problem}")
     units = plan.config.units
     if units is not None and units > 1:
         what = f"{what} with --units {units}"
