@@ -135,6 +135,13 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     ]
     needed = set(zip(used["machine"], used["run"], strict=True))
     recordings = [r for r in recordings if (r.machine, r.run) in needed]
+    if not recordings:
+        (machine, scenario), reason = sorted(skipped.items())[0]
+        raise SDTError(
+            f"nothing to benchmark: none of the {len(skipped)} (machine, scenario) pairs can "
+            f"be scored (e.g. {machine} / {scenario}: {reason}); each needs a training and a "
+            f"test run of every class: add runs, or give an allocation with --allocation"
+        )
     users = node_sensors(sensors, registry)
     nodes = find_nodes(recordings, everything, config.axes, users) if users else {}
     if config.nodes and config.sample != "node":

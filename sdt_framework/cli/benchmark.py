@@ -18,7 +18,7 @@ import typer
 from rich.text import Text
 
 from .benchmark_table import print_table4
-from .common import console, err_console, registry, warn
+from .common import console, err_console, registry, shorten_labels, warn
 from .progress import progress_bar
 
 EXIT_CLASSIFIER_FAILED = 1
@@ -27,8 +27,11 @@ EXIT_TERMINATED = 143  # 128 + SIGTERM
 
 
 def _say(label: str, style: str, message: str) -> None:
-    """One line on stderr; ``message`` is printed as given, never read as markup."""
-    err_console.print(Text.assemble((label, style), " ", message), highlight=False, soft_wrap=True)
+    """One line on stderr; ``message`` is printed as given (over-long labels shortened),
+    never read as markup."""
+    err_console.print(
+        Text.assemble((label, style), " ", shorten_labels(message)), highlight=False, soft_wrap=True
+    )
 
 
 def _resume_command(ctx: typer.Context, out_dir: Path, yes: bool) -> str:
