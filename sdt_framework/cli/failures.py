@@ -111,8 +111,8 @@ def internal_error_line(exc: BaseException, argv: list[str] | None = None) -> st
     command = one_line(shlex.join(["sdt", *(sys.argv[1:] if argv is None else argv)]), 160)
     detail = one_line(f"{type(exc).__name__}: {exc}", 300)
     return (
-        f"{detail}{where}; this is a bug in sdt, not a mistake in your input; please report "
-        f"it with the output of: SDT_DEBUG=1 {command}"
+        f"{detail}{where}; this is a bug in sdt (or in a plugin it runs), not a mistake in your "
+        f"input; please report it with the output of: SDT_DEBUG=1 {command}"
     )
 
 
