@@ -1,8 +1,11 @@
-"""Error types a user can act on.
+"""Error types a user can act on, and the one for a bug in sdt.
 
 Every error a user can cause derives from :class:`SDTError`. The CLI prints
-such errors as one line (no traceback) and exits with status 2; anything else
-is a bug and keeps its traceback.
+such errors as one line (no traceback) and exits with status 2. Anything else
+is a bug: :class:`InternalError` is raised where sdt finds one of its own
+invariants broken, and the CLI reports it, like any other unexpected
+exception, as an ``internal error:`` line asking for a report, exit status
+:data:`INTERNAL_EXIT` (``SDT_DEBUG=1`` adds the traceback).
 """
 
 from __future__ import annotations
@@ -14,11 +17,14 @@ from collections.abc import Iterable
 from pydantic import ValidationError
 
 __all__ = [
+    "INTERNAL_EXIT",
     "ArgumentTypeError",
     "ArgumentValueError",
     "DuplicateNameError",
+    "InternalError",
     "PluginLoadError",
     "SDTError",
+    "SDTWarning",
     "SpecFileError",
     "UnknownNameError",
     "UserInterruptError",
@@ -35,6 +41,22 @@ class SDTError(Exception):
     """
 
     exit_code: int = 2
+
+
+#: exit status of a bug in sdt (EX_SOFTWARE of sysexits.h): never a user's mistake (2)
+INTERNAL_EXIT = 70
+
+
+class InternalError(RuntimeError):
+    """A state sdt should never reach whatever the input: a bug in sdt, not a user error.
+
+    Deliberately not an :class:`SDTError`, so no handler of user errors takes
+    it for one; the CLI exits with :data:`INTERNAL_EXIT`.
+    """
+
+
+class SDTWarning(UserWarning):
+    """A problem sdt worked around (a cache entry recomputed): one ``warning:`` line in the CLI."""
 
 
 class UserInterruptError(SDTError):

@@ -54,6 +54,7 @@ from ..stages import has_tolerances
 from .plan import Plan
 
 __all__ = [
+    "ASSUMES",
     "CONFIRM_ABOVE_SECONDS",
     "FEATURE_SECONDS_PER_MSAMPLE",
     "RUN_SECONDS",
@@ -62,9 +63,15 @@ __all__ = [
     "estimate",
     "estimate_like",
     "memory_problem",
+    "recording_problem",
     "unfit",
 ]
 
+#: What every printed estimate rests on, said beside it (a loaded machine took 10x longer).
+ASSUMES = (
+    "single-thread times measured on an idle 2-core reference machine; a loaded or slower "
+    "machine takes longer, a warm feature cache less"
+)
 #: A benchmark estimated to take longer than this needs ``--yes`` to start.
 CONFIRM_ABOVE_SECONDS = 3600.0
 #: Chain + features, seconds per million input samples per draw (one thread).
@@ -239,6 +246,36 @@ def memory_problem(size: Estimate) -> str | None:
     return (
         f"needs about {human_bytes(size.memory_bytes)} of memory, more than the "
         f"{human_bytes(room)} available"
+    )
+
+
+def recording_problem(plan: Plan, size: Estimate) -> str | None:
+    """Why the plan's largest recording alone cannot be processed here (naming its file), or None.
+
+    When the part of the memory that no setting but the data changes (each
+    process running a chain on the largest recording) is more than is
+    available, fewer repetitions, sensors or classifiers cannot help: the
+    recording is named with its file's size, and what would.
+    """
+    room = host.available_memory()
+    if size.fixed_bytes <= room or not plan.recordings:
+        return None
+    largest = max(plan.recordings, key=lambda r: r.n_acquisitions * r.samples_per_acquisition)
+    samples = largest.n_acquisitions * largest.samples_per_acquisition
+    try:
+        on_disk = f", {human_bytes(os.stat(largest.source).st_size)}"
+    except (OSError, ValueError):  # generated data: no file
+        on_disk = ""
+    one = PROCESS_BYTES + CHAIN_BYTES_PER_SAMPLE * samples
+    fewer = ""
+    if size.workers > 1 and one <= room:
+        fewer = f", or use --jobs 1 (one process needs about {human_bytes(one)})"
+    return (
+        f"recording {largest.recording_id} ({largest.source}{on_disk}) is {samples:,} samples; "
+        f"running it through a sensor chain needs about "
+        f"{human_bytes(CHAIN_BYTES_PER_SAMPLE * samples)} of memory in each of {size.workers} "
+        f"process{'es' if size.workers > 1 else ''}, more than the {human_bytes(room)} "
+        f"available; split it into shorter recordings{fewer}"
     )
 
 

@@ -17,6 +17,11 @@ LocalCluster we start from their start-up), so an interrupted worker neither
 returns a half-trained model nor floods the terminal with tracebacks. The
 main process stops consuming results and shuts the pool down. Workers of a
 cluster the user started (``--scheduler``) are left as they are.
+
+A main process killed outright (SIGKILL, the out-of-memory killer) cannot shut
+its pool down, and loky workers used to compute on for minutes. Each local
+worker therefore watches its parent from its first task on
+(:func:`exit_with_parent`) and ends within a second or two of it.
 """
 
 from __future__ import annotations
@@ -26,6 +31,7 @@ import logging
 import os
 import signal
 import threading
+import time
 from collections.abc import Callable, Iterable, Iterator
 from typing import Any, Protocol
 
@@ -38,8 +44,35 @@ __all__ = [
     "Executor",
     "LocalExecutor",
     "check_scheduler_address",
+    "exit_with_parent",
     "open_executor",
 ]
+
+#: how often a worker looks whether the main process still lives, seconds
+PARENT_POLL_SECONDS = 0.5
+#: this process's parent watch has started (a worker's own state, set in the worker)
+_watching: list[int] = []
+
+
+def exit_with_parent(parent: int) -> None:
+    """End this process as soon as ``parent`` is no longer its parent (it died).
+
+    A daemon thread polls ``os.getppid()`` (an orphan is re-parented to init
+    or a subreaper): portable to every POSIX system, and unlike Linux's
+    ``PR_SET_PDEATHSIG`` not fooled by loky starting workers from a helper
+    thread of the parent. Started once per process; a parent already gone
+    ends the process at once.
+    """
+    if _watching:
+        return
+    _watching.append(parent)
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(PARENT_POLL_SECONDS)
+        os._exit(1)  # nothing of this worker's can be delivered any more
+
+    threading.Thread(target=watch, name="sdt-parent-watch", daemon=True).start()
 
 
 class Executor(Protocol):
@@ -51,15 +84,18 @@ class Executor(Protocol):
 
 
 class _IgnoringInterrupts:
-    """``fn`` run in a worker process that leaves Ctrl-C to the main process (picklable)."""
+    """``fn`` run in a worker process that leaves Ctrl-C to the main process and ends with
+    it (picklable)."""
 
     def __init__(self, fn: Callable[[Any], Any]) -> None:
         self.fn = fn
         self.main_pid = os.getpid()
 
     def __call__(self, item: Any) -> Any:
-        if os.getpid() != self.main_pid and threading.current_thread() is threading.main_thread():
-            signal.signal(signal.SIGINT, signal.SIG_IGN)
+        if os.getpid() != self.main_pid:
+            exit_with_parent(self.main_pid)
+            if threading.current_thread() is threading.main_thread():
+                signal.signal(signal.SIGINT, signal.SIG_IGN)
         return self.fn(item)
 
 

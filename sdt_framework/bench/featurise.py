@@ -25,6 +25,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -32,12 +33,12 @@ import numpy as np
 
 from ..chain import compile_chain
 from ..chain.shared import SharedPrefix, prefix_key
-from ..data.cache import CORRUPT_ENTRY_ERRORS
+from ..data.cache import CORRUPT_ENTRY_ERRORS, CacheEntryWarning
 from ..data.recording import Recording
 from ..features import extract
 from ..seeding import derive_seed
 from ..specs import FeatureSetSpec, SensorSpec
-from ..stages import draw_unit, has_tolerances, is_random, uses_node
+from ..stages import StageSpec, draw_unit, has_tolerances, is_random, uses_node
 from .feature_cache import CachedBlock, ChecksumMismatchError, read_entry, write_entry
 
 __all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurise_recording", "noise_seed"]
@@ -85,6 +86,9 @@ class FeatureJob:
     axis: str = "x"  # the sensor axis this recording's channel is mounted on
     units: int | None = None  # physical units per sensor (None: the nominal profile only)
     node: tuple[Recording, ...] = ()  # the triaxial node's other two axes (for cross-axis)
+    #: the specs of the stages the sensors' tolerances name, which a drawn unit adds and binds
+    #: here: a worker process has no registry of its own
+    stages: tuple[StageSpec, ...] = ()
 
 
 def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) -> int | None:
@@ -142,6 +146,23 @@ def _open(job: FeatureJob) -> SharedPrefix:
     return SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label, other_axes=others)
 
 
+def _open_noting(job: FeatureJob, notes: list[str]) -> SharedPrefix:
+    """:func:`_open`, with the cache entries discarded on the way added to ``notes``.
+
+    A worker's warnings would reach only its own stderr (raw, with a source
+    line) or a Dask worker's log; as notes they reach the user as one line.
+    """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", CacheEntryWarning)
+        shared = _open(job)
+    for item in caught:
+        if issubclass(item.category, CacheEntryWarning):
+            notes.append(str(item.message))
+        else:  # not ours to reword: issued again as it was
+            warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
+    return shared
+
+
 def _other_axes(job: FeatureJob) -> list[str]:
     """The node's other two axes, in the order of ``job.node``."""
     return sorted({"x", "y", "z"} - {job.axis})
@@ -169,8 +190,9 @@ def _variants(job: FeatureJob) -> list[tuple[SensorSpec, int]]:
     """
     if job.units is None:
         return [(named.for_axis(job.axis), -1) for named in job.sensors]
+    table = {spec.name: spec for spec in job.stages}
     return [
-        (draw_unit(named, job.seed, unit).for_axis(job.axis), unit)
+        (draw_unit(named, job.seed, unit, table).for_axis(job.axis), unit)
         for named in job.sensors
         for unit in range(job.units)
         if unit == 0 or has_tolerances(named)
@@ -227,7 +249,7 @@ def featurise_recording(job: FeatureJob) -> RecordingFeatures:
                     path.unlink(missing_ok=True)
             if arrays is None:
                 if shared is None:
-                    shared = _open(job)
+                    shared = _open_noting(job, out.notes)
                 arrays = _compute(shared, job, sensor, chain_seed)
                 source = "computed"
                 if path is not None:

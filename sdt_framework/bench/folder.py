@@ -14,6 +14,9 @@ resume). It refuses, with one line, a path that is a file, a folder that is
 not an sdt results folder, a results folder holding files sdt did not write,
 and a results folder of another configuration (naming what differs), so
 nothing a user owns and no other benchmark's results are ever overwritten.
+It then locks the folder for this process (:mod:`.folder_lock`): a second
+benchmark started on the same folder while the first runs is refused, naming
+the first one's process, instead of computing everything a second time.
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ from ..io import OutputError, atomic_write_text, ensure_writable_dir
 from ..toml_files import parse_toml
 from .config import BenchmarkConfig, write_config
 from .config_paths import relative_to, resolve_written
+from .folder_lock import LOCK, lock_results_folder
 
 __all__ = [
     "MARKER",
@@ -75,7 +79,7 @@ DERIVED_ENTRIES = (*EXPLORE_FILES, "comparison.csv")
 _DERIVED = re.compile(r"^comparison_vs_.+\.csv$")
 #: Settings that change how a benchmark runs, never what it finds.
 RUN_ONLY_SETTINGS = frozenset({"jobs", "backend", "scheduler", "cache_dir", "report"})
-_OWN = frozenset({MARKER, "runs", *OUTPUT_FILES, *REPORT_ENTRIES, *DERIVED_ENTRIES})
+_OWN = frozenset({MARKER, LOCK, "runs", *OUTPUT_FILES, *REPORT_ENTRIES, *DERIVED_ENTRIES})
 _TEMPORARY = re.compile(r"^\..+\.tmp$")  # left by an atomic write cut short (io.atomic_path)
 
 
@@ -140,19 +144,22 @@ def claim_results_folder(out: str | Path, config: BenchmarkConfig) -> bool:
     """Check ``out`` and claim it for ``config``; True when resuming an existing results folder.
 
     Writes the marker (first) and ``config.toml`` before any work, so an
-    interrupted benchmark can always be resumed from its folder.
+    interrupted benchmark can always be resumed from its folder. The folder
+    stays locked for this process until :func:`~.folder_lock.unlock_results_folder`
+    or the process ends (a claim of a folder it holds already is a no-op lock).
 
     Raises
     ------
     SDTError
-        For every folder that must not be written (see the module docstring).
+        For every folder that must not be written (see the module docstring), and
+        a folder another running process holds.
     """
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise OutputError(
             f"--out {out} is a file; name a folder (new or empty, or a results folder to resume)"
         )
-    entries = sorted(p.name for p in out.iterdir()) if out.is_dir() else []
+    entries = sorted(p.name for p in out.iterdir() if p.name != LOCK) if out.is_dir() else []
     current = relative_to(config_identity(config), out)  # moves with its data
     resuming = bool(entries)
     if resuming:
@@ -178,6 +185,7 @@ def claim_results_folder(out: str | Path, config: BenchmarkConfig) -> bool:
                 f"{out / 'config.toml'} --out {out}`, or choose a new --out folder"
             )
     ensure_writable_dir(out, "results folder", "--out")
+    lock_results_folder(out)
     if not (out / MARKER).exists():
         atomic_write_text(
             out / MARKER, json.dumps({"format": _FORMAT, "version": 2, "configuration": current})

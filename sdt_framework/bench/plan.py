@@ -27,6 +27,8 @@ from ..errors import SDTError
 from ..features import resolve_feature_set, samples_for
 from ..registry import Registry
 from ..specs import ClassifierSpec, FeatureSetSpec, SensorSpec
+from ..stages import StageSpec
+from ..stages.units import drawn_stages
 from .config import BenchmarkConfig
 from .node_samples import Node, resolve_nodes
 from .nodes import find_nodes, node_sensors
@@ -58,6 +60,8 @@ class Plan:
     transfers: list[Transfer] = field(default_factory=list)
     #: triaxial nodes classified as one sample per window (``sample = "node"``)
     sample_nodes: list[Node] = field(default_factory=list)
+    #: with units: the stages the sensors' tolerances name (a drawn unit adds and binds them)
+    stages: dict[str, StageSpec] = field(default_factory=dict)
 
     def run_groups(self) -> list[tuple[Transfer, bool]]:
         """(pair, is a transfer) of every group of runs: each sensor trained and tested on
@@ -131,6 +135,13 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     ]
     needed = set(zip(used["machine"], used["run"], strict=True))
     recordings = [r for r in recordings if (r.machine, r.run) in needed]
+    if not recordings:
+        (machine, scenario), reason = sorted(skipped.items())[0]
+        raise SDTError(
+            f"nothing to benchmark: none of the {len(skipped)} (machine, scenario) pairs can "
+            f"be scored (e.g. {machine} / {scenario}: {reason}); each needs a training and a "
+            f"test run of every class: add runs, or give an allocation with --allocation"
+        )
     users = node_sensors(sensors, registry)
     nodes = find_nodes(recordings, everything, config.axes, users) if users else {}
     if config.nodes and config.sample != "node":
@@ -159,7 +170,13 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
         nodes,
         transfers,
         sample_nodes,
+        _unit_stages(sensors, registry) if config.units is not None else {},
     )
+
+
+def _unit_stages(sensors: list[SensorSpec], registry: Registry) -> dict[str, StageSpec]:
+    """The registry's specs of the stages the sensors' tolerances name, by name."""
+    return {name: registry.stage(name) for s in sensors for name in drawn_stages(s)}
 
 
 def _transfers(

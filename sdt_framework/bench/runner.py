@@ -32,6 +32,7 @@ from .classify import RunResult, run_classifier
 from .execute import check_scheduler_address, open_executor
 from .featurise import FeatureBlock, FeatureJob, featurise_recording
 from .folder import claim_results_folder
+from .folder_lock import holds_results_folder, unlock_results_folder
 from .plan import Plan, plan_benchmark
 from .saturation import saturation_table
 from .store import load_finished, store_finished
@@ -137,15 +138,28 @@ def run_benchmark(
     Runs already finished in ``out_dir`` (same key) are not redone; failed runs
     are never stored, so a resume retries them. ``warn`` receives one line per
     problem that does not stop the run (a corrupt cache entry, a damaged run
-    file); by default it issues a ``RuntimeWarning``.
+    file); by default it issues a ``RuntimeWarning``. ``out_dir`` is locked
+    while it runs (released at the end unless the caller held it before).
 
     Raises
     ------
     SDTError
-        Before any work, from :func:`preflight`.
+        Before any work, from :func:`preflight` (another process running in
+        ``out_dir`` included).
     KeyboardInterrupt
         On Ctrl-C; nothing of an unfinished run is stored.
     """
+    held = holds_results_folder(out_dir)
+    try:
+        return _run(plan, out_dir, progress, warn)
+    finally:
+        if not held:
+            unlock_results_folder(out_dir)
+
+
+def _run(
+    plan: Plan, out_dir: str | Path, progress: Progress | None, warn: Warn | None
+) -> BenchmarkResult:
     config = plan.config
     out_dir = Path(out_dir)
     report = progress or (lambda stage, done, total: None)
@@ -166,6 +180,7 @@ def run_benchmark(
             config.axes.get(r.channel, "x"),
             config.units,
             plan.nodes.get(r.recording_id, ()),
+            tuple(plan.stages.values()),
         )
         for r in plan.recordings
     ]

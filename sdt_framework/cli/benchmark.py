@@ -15,10 +15,10 @@ from pathlib import Path
 from typing import Any
 
 import typer
-from rich.table import Table
 from rich.text import Text
 
-from .common import console, err_console, print_table, registry, warn
+from .benchmark_table import print_table4
+from .common import console, err_console, registry, shorten_labels, warn
 from .progress import progress_bar
 
 EXIT_CLASSIFIER_FAILED = 1
@@ -27,8 +27,11 @@ EXIT_TERMINATED = 143  # 128 + SIGTERM
 
 
 def _say(label: str, style: str, message: str) -> None:
-    """One line on stderr; ``message`` is printed as given, never read as markup."""
-    err_console.print(Text.assemble((label, style), " ", message), highlight=False, soft_wrap=True)
+    """One line on stderr; ``message`` is printed as given (over-long labels shortened),
+    never read as markup."""
+    err_console.print(
+        Text.assemble((label, style), " ", shorten_labels(message)), highlight=False, soft_wrap=True
+    )
 
 
 def _resume_command(ctx: typer.Context, out_dir: Path, yes: bool) -> str:
@@ -87,37 +90,6 @@ def _sensor_names(value: str | None) -> list[str] | None:
     from ..parts import split_names
 
     return split_names(value) or None if value else None
-
-
-def _print_table4(results: Any, sensor_order: list[str]) -> None:
-    """Table 4 in the terminal: one table per machine, scenario blocks, mean over ± SD."""
-    from ..bench.table4 import build_table4
-
-    table = build_table4(results, sensor_order)
-    if table.empty:
-        console.print("No successful runs: nothing to tabulate.")
-        return
-    for machine in sorted({m for m, _ in table.columns}):
-        wanted = [i for i, (m, _) in enumerate(table.columns) if m == machine]
-        out = Table(title=f"Macro F1 (mean ± SD), {machine}", title_justify="left")
-        out.add_column("scenario")
-        out.add_column("sensor")
-        for i in wanted:
-            out.add_column(table.columns[i][1].upper(), justify="right")
-        for block in table.blocks:
-            for k, (sensor, row) in enumerate(zip(block.sensors, block.cells, strict=True)):
-                cells = [row[i] for i in wanted]
-                out.add_row(
-                    block.scenario if k == 0 else "",
-                    sensor,
-                    *("–" if c.mean != c.mean else f"{c.mean:.4f}" + _sd(c.sd) for c in cells),
-                    end_section=k == len(block.sensors) - 1,
-                )
-        print_table(out)
-
-
-def _sd(sd: float) -> str:
-    return "" if sd != sd else f"\n±{sd:.4f}"
 
 
 def benchmark(
@@ -248,8 +220,24 @@ def benchmark(
 
 
 def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: list[bool]) -> bool:
-    """Plan, check the size, run, write; True if some classifier failed in all its runs."""
-    from ..bench.estimate import CONFIRM_ABOVE_SECONDS
+    """Plan, check the size, run, write; True if some classifier failed in all its runs.
+
+    The results folder stays locked from its claim until the outputs and the report are
+    written (:mod:`~sdt_framework.bench.folder_lock`).
+    """
+    from ..bench.folder_lock import unlock_results_folder
+
+    try:
+        return _locked_run(ctx, config, out_dir, yes, claimed)
+    finally:
+        unlock_results_folder(out_dir)
+
+
+def _locked_run(
+    ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: list[bool]
+) -> bool:
+    """:func:`_run` once the names are known: everything from the plan to the summary."""
+    from ..bench.estimate import ASSUMES
     from ..bench.output import write_outputs
     from ..bench.runner import plan_benchmark, preflight, run_benchmark
     from ..bench.saturation import saturation_lines, saturation_summary
@@ -273,8 +261,7 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
         highlight=False,
         soft_wrap=True,
     )
-    if size.seconds > CONFIRM_ABOVE_SECONDS:
-        _say("note:", "yellow", f"this benchmark is {size.line()}")
+    _say("note:", "yellow", f"this benchmark is {size.line()} ({ASSUMES})")
     from ..data.sizes import building
 
     reduce = "process less data at once (shorter or fewer recordings, fewer --jobs)"
@@ -282,7 +269,7 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
         with progress_bar() as progress:
             result = run_benchmark(plan, out_dir, progress, warn)
         results = write_outputs(result, out_dir)
-    _print_table4(results, [s.name for s in plan.sensors])
+    print_table4(results, [s.name for s in plan.sensors])
     for line in saturation_lines(saturation_summary(result.saturation)):
         warn(line)
     if config.report:

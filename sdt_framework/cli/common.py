@@ -8,6 +8,13 @@ printer. Styled labels are built as :class:`rich.text.Text` (:func:`warn`,
 characters in any printed string are shown as escapes, never sent to the
 terminal (:mod:`.visible`).
 
+A label from the user's data (a condition, recording or file name) can be of
+any length; on the terminal each run of non-blank characters longer than
+:data:`LABEL_LIMIT` is cut in the middle and a message is at most
+:data:`MESSAGE_LIMIT` characters (:func:`shorten_labels`), so a 100 000-character
+condition name is one readable line, not megabytes. Result files keep every
+label whole.
+
 Tables never cut a cell: when the console is narrower than a table (a pipe or
 a file gets 80 columns), cells wrap (``overflow="fold"``) instead of being
 truncated with an ellipsis, and a table whose columns cannot all fit even
@@ -18,6 +25,7 @@ and no column disappears.
 from __future__ import annotations
 
 import json
+import re
 import sys
 from pathlib import Path
 from typing import Any
@@ -38,18 +46,47 @@ __all__ = [
     "print_json",
     "print_table",
     "registry",
+    "shorten_labels",
     "table",
     "warn",
 ]
+
+#: a run of non-blank characters longer than this is cut in the middle on the terminal
+LABEL_LIMIT = 200
+#: a printed message longer than this is cut in the middle
+MESSAGE_LIMIT = 2000
+_LONG_RUN = re.compile(rf"\S{{{LABEL_LIMIT + 1},}}")
 
 console: Console = SafeConsole(markup=False, emoji=False)
 err_console: Console = SafeConsole(stderr=True, markup=False, emoji=False)
 
 
+def _middle(text: str, keep: int) -> str:
+    """``text`` as its first and last ``keep // 2`` characters and how long it was."""
+    half = keep // 2
+    return f"{text[:half]}…{text[-half:]} ({len(text):,} characters)"
+
+
+def shorten_labels(message: str) -> str:
+    """``message`` for the terminal: over-long labels and the message itself cut in the middle.
+
+    Each run of non-blank characters longer than :data:`LABEL_LIMIT` keeps its
+    first and last 60 characters (``healthyhhh…hhh (100,007 characters)``);
+    a message still longer than :data:`MESSAGE_LIMIT` keeps its two ends.
+    Shorter text is returned as it is.
+    """
+    if len(message) <= LABEL_LIMIT:
+        return message
+    message = _LONG_RUN.sub(lambda found: _middle(found[0], 120), message)
+    return message if len(message) <= MESSAGE_LIMIT else _middle(message, MESSAGE_LIMIT - 40)
+
+
 def print_error(message: str, label: str = "error:", style: str = "bold red") -> None:
-    """Print ``label message`` on one line to stderr, ``message`` exactly as given."""
+    """Print ``label message`` on one line to stderr: as given, over-long labels shortened."""
     err_console.print(
-        Text.assemble((label, style), " ", visible(message)), highlight=False, soft_wrap=True
+        Text.assemble((label, style), " ", visible(shorten_labels(message))),
+        highlight=False,
+        soft_wrap=True,
     )
 
 

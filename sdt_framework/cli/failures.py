@@ -11,25 +11,41 @@ for a problem the user can act on.
   :class:`MemoryError`: one line naming the path (for memory: the step that was
   building, see :func:`sdt_framework.data.sizes.building`), the cause and what to
   do, exit 2.
-  ``SDT_DEBUG=1`` shows their traceback instead.
-- Anything else is a bug and keeps its traceback.
+- Anything else (an :class:`~sdt_framework.errors.InternalError`, or any other exception
+  no code path expected) is a bug in sdt, never the user's mistake: one
+  ``internal error:`` line naming the exception and where it was raised, asking for a
+  report with the ``SDT_DEBUG=1`` output, exit status 70
+  (:data:`~sdt_framework.errors.INTERNAL_EXIT`, EX_SOFTWARE).
+
+``SDT_DEBUG=1`` prints the traceback of every error above (Ctrl-C excepted) before
+its line; the line and the exit status stay the same.
 """
 
 from __future__ import annotations
 
 import errno
 import os
+import shlex
 import sys
+import traceback
+import warnings
 from collections.abc import Callable
 from typing import Any, NoReturn
 
 import click
 from typer.core import TyperGroup
 
-from ..errors import SDTError, UserInterruptError, one_line
-from .common import print_error
+from ..errors import INTERNAL_EXIT, SDTError, SDTWarning, UserInterruptError, one_line
+from .common import print_error, warn
 
-__all__ = ["ENV_DEBUG", "InterruptibleGroup", "memory_error_line", "os_error_line", "run"]
+__all__ = [
+    "ENV_DEBUG",
+    "InterruptibleGroup",
+    "internal_error_line",
+    "memory_error_line",
+    "os_error_line",
+    "run",
+]
 
 ENV_DEBUG = "SDT_DEBUG"
 
@@ -85,6 +101,21 @@ def memory_error_line(exc: MemoryError) -> str:
     )
 
 
+def internal_error_line(exc: BaseException, argv: list[str] | None = None) -> str:
+    """One line for a bug: the exception, where it was raised, and how to report it."""
+    frames = traceback.extract_tb(exc.__traceback__)
+    where = ""
+    if frames:
+        last = frames[-1]
+        where = f" (raised at {os.path.basename(last.filename)}:{last.lineno} in {last.name})"
+    command = one_line(shlex.join(["sdt", *(sys.argv[1:] if argv is None else argv)]), 160)
+    detail = one_line(f"{type(exc).__name__}: {exc}", 300)
+    return (
+        f"{detail}{where}; this is a bug in sdt (or in a plugin it runs), not a mistake in your "
+        f"input; please report it with the output of: SDT_DEBUG=1 {command}"
+    )
+
+
 def _interrupt(exc: BaseException) -> UserInterruptError:
     notes = " ".join(getattr(exc, "__notes__", ()))
     return UserInterruptError(one_line(f"stopped by Ctrl-C. {notes}".strip(), 400))
@@ -101,27 +132,64 @@ class InterruptibleGroup(TyperGroup):
             raise _interrupt(exc) from exc
 
 
+def _show_warning_line(show: Callable[..., None]) -> Callable[..., None]:
+    """``warnings.showwarning`` printing sdt's own warnings as one ``warning:`` line.
+
+    An :class:`~sdt_framework.errors.SDTWarning` (a cache entry recomputed) is
+    news for the user, not a Python diagnostic: no source file and line.
+    Other warnings go to ``show``, Python's own display.
+    """
+
+    def display(
+        message: Warning | str,
+        category: type[Warning],
+        filename: str,
+        lineno: int,
+        file: Any = None,
+        line: str | None = None,
+    ) -> None:
+        if issubclass(category, SDTWarning):
+            warn(one_line(message, 2000))
+        else:
+            show(message, category, filename, lineno, file, line)
+
+    return display
+
+
 def run(app: Callable[[], Any]) -> None:
     """Call ``app`` and turn the errors above into one line and an exit status."""
-    debug = bool(os.environ.get(ENV_DEBUG))
+    previous = warnings.showwarning
+    warnings.showwarning = _show_warning_line(previous)
+    try:
+        _run(app)
+    finally:
+        warnings.showwarning = previous
+
+
+def _run(app: Callable[[], Any]) -> None:
     try:
         app()
     except UserInterruptError as exc:
         _exit(str(exc), exc.exit_code, "interrupted:")
     except SDTError as exc:
-        _exit(str(exc), exc.exit_code)
+        _exit(str(exc), exc.exit_code, exc=exc)
     except KeyboardInterrupt as exc:
         _exit(str(_interrupt(exc)), UserInterruptError.exit_code, "interrupted:")
     except OSError as exc:
-        if debug:
-            raise
-        _exit(os_error_line(exc), 2)
+        _exit(os_error_line(exc), 2, exc=exc)
     except MemoryError as exc:
-        if debug:
-            raise
-        _exit(memory_error_line(exc), 2)
+        _exit(memory_error_line(exc), 2, exc=exc)
+    except Exception as exc:  # a bug: say so, never as a user's mistake
+        _exit(internal_error_line(exc), INTERNAL_EXIT, "internal error:", exc=exc)
 
 
-def _exit(message: str, code: int, label: str = "error:") -> NoReturn:
+def _exit(
+    message: str, code: int, label: str = "error:", exc: BaseException | None = None
+) -> NoReturn:
+    """Print ``label message`` (after ``exc``'s traceback under ``SDT_DEBUG=1``), exit ``code``."""
+    if exc is not None and os.environ.get(ENV_DEBUG):
+        sys.stderr.flush()
+        traceback.print_exception(exc, file=sys.stderr)
+        sys.stderr.flush()
     print_error(message, label=label, style="yellow" if code == 130 else "bold red")
     sys.exit(code)

@@ -66,8 +66,9 @@ def root(
 ) -> None:
     """Sensor Digital Twin: benchmark accelerometers for vibration diagnostics on a laptop.
 
-    A problem with the input or the environment prints one line and exits with status 2
-    (SDT_DEBUG=1 shows the traceback of an operating-system error); Ctrl-C exits with 130.
+    A problem with the input or the environment prints one line and exits with status 2;
+    a bug in sdt prints one 'internal error:' line and exits with 70 (SDT_DEBUG=1 shows the
+    traceback of any error); Ctrl-C exits with 130.
 
     Example:
 
@@ -81,5 +82,5 @@ def root(
 
 def main() -> None:
     """Run ``sdt``; a user or environment error prints one line and exits with status 2,
-    Ctrl-C exits with 130 (see :mod:`sdt_framework.cli.failures`)."""
+    a bug with 70, Ctrl-C with 130 (see :mod:`sdt_framework.cli.failures`)."""
     run(app)

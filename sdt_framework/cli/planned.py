@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 
 from ..bench import estimate as sizes
 from ..errors import SDTError
-from .common import err_console
+from .common import err_console, shorten_labels
 
 if TYPE_CHECKING:
     from ..bench.estimate import Estimate
@@ -59,6 +59,9 @@ def check_size(
 ) -> Estimate:
     """The plan's estimate, checked by :func:`check_estimate` (``--units`` named when set)."""
     size = sizes.estimate(plan, stored_runs=stored_runs(out_dir))
+    problem = sizes.recording_problem(plan, size)
+    if problem is not None:  # the data itself, not the amount of work asked for
+        raise SDTError(f"this {what} cannot run: {problem}")
     units = plan.config.units
     if units is not None and units > 1:
         what = f"{what} with --units {units}"
@@ -78,12 +81,14 @@ def print_skipped(plan: Plan, shown: Collection[str] = ()) -> None:
     """
     for name, reason in plan.skipped_sensors.items():
         if name not in shown:
-            err_console.print(f"skipped sensor {name}: {reason}", highlight=False)
+            err_console.print(shorten_labels(f"skipped sensor {name}: {reason}"), highlight=False)
     for (machine, scenario), reason in sorted(plan.skipped.items()):
-        err_console.print(f"skipped {machine} / {scenario}: {reason}", highlight=False)
+        line = shorten_labels(f"skipped {machine} / {scenario}: {reason}")
+        err_console.print(line, highlight=False, soft_wrap=True)
     files = plan.dataset.skipped
     for item in files[:_SHOWN_FILES]:
-        err_console.print(f"skipped {item.path}: {item.reason}", highlight=False, soft_wrap=True)
+        line = shorten_labels(f"skipped {item.path}: {item.reason}")
+        err_console.print(line, highlight=False, soft_wrap=True)
     if len(files) > _SHOWN_FILES:
         err_console.print(
             f"skipped {len(files) - _SHOWN_FILES} more files or folders (all listed in "

@@ -2,10 +2,15 @@
 
 Parsing a 100 MB NLN-EMP CSV takes a fraction of a second with pyarrow but
 the archive is ~80 GB; a second pass (another scenario, another sensor) should
-not parse again. Parsed arrays are stored as ``.npy`` files; the key changes
-when the source file is modified (size or mtime), so a stale entry is never
-used. Writes are atomic, and failures are never cached. A corrupt entry
-(truncated, foreign) is named in a warning, discarded and recomputed.
+not parse again. Parsed arrays are stored as ``.npz`` files holding the array
+and a SHA-256 digest of it and its key (as the feature cache's entries do);
+the key changes when the source file is modified (size or mtime), so a stale
+entry is never used. Writes are atomic, and failures are never cached. An
+entry that is corrupt (truncated, foreign) or whose contents were changed after
+it was written (its digest does not match: a shared or copied cache folder, a
+damaged disk) is named in one :class:`CacheEntryWarning`, discarded and
+recomputed. The digest catches a change by anyone who does not recompute it;
+it is not a signature.
 """
 
 from __future__ import annotations
@@ -19,15 +24,30 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import SDTError
+from ..errors import SDTError, SDTWarning
 from ..io import atomic_path
 
-__all__ = ["CORRUPT_ENTRY_ERRORS", "ENV_CACHE_DIR", "ArrayCache", "default_cache_dir"]
+__all__ = [
+    "CORRUPT_ENTRY_ERRORS",
+    "ENV_CACHE_DIR",
+    "ArrayCache",
+    "CacheEntryWarning",
+    "default_cache_dir",
+]
 
 ENV_CACHE_DIR = "SDT_CACHE_DIR"
 
 #: What reading a damaged .npy/.npz raises (truncated, not a zip, pickled, unreadable).
 CORRUPT_ENTRY_ERRORS = (OSError, ValueError, EOFError, KeyError, zipfile.BadZipFile)
+
+
+class CacheEntryWarning(SDTWarning):
+    """A cache entry discarded (corrupt, or changed after it was written) and recomputed.
+
+    Raised as a warning where the entry is read; the benchmark's workers pass
+    it on to the main process as a note, and the CLI prints it as one
+    ``warning:`` line.
+    """
 
 
 def default_cache_dir(environ: Mapping[str, str] | None = None) -> Path:
@@ -70,8 +90,28 @@ def _user_database_home() -> str | None:
         return None
 
 
+class ChecksumMismatchError(ValueError):
+    """A cache entry whose contents do not match the digest stored with them."""
+
+
+def _digest(key: str, data: np.ndarray) -> str:
+    sha = hashlib.sha256(key.encode())
+    sha.update(f"{data.dtype.str}{data.shape}".encode())
+    sha.update(np.ascontiguousarray(data).data)
+    return sha.hexdigest()
+
+
+def _read_entry(path: Path, key: str) -> np.ndarray:
+    """The array of the entry at ``path``; ValueError if it differs from its digest."""
+    with np.load(path, allow_pickle=False) as stored:
+        data, digest = stored["data"], str(stored["digest"])
+    if digest != _digest(key, data):
+        raise ChecksumMismatchError("contents differ from their checksum")
+    return data
+
+
 class ArrayCache:
-    """A folder of ``.npy`` files, one per (source file, size, mtime, variant).
+    """A folder of ``.npz`` entries, one per (source file, size, mtime, variant).
 
     Parameters
     ----------
@@ -81,7 +121,7 @@ class ArrayCache:
         False turns the cache into a pass-through (always parse, never write).
     """
 
-    VERSION = "1"
+    VERSION = "2"  # 2: .npz entries with a digest (1: bare .npy, no longer read)
 
     def __init__(self, root: str | os.PathLike[str] | None = None, *, enabled: bool = True) -> None:
         self.enabled = enabled
@@ -100,7 +140,7 @@ class ArrayCache:
 
     def path_for(self, source: str | os.PathLike[str], variant: str = "") -> Path:
         """Where the parsed array of ``source`` is (or would be) stored."""
-        return self.root / "arrays" / f"{self.key(source, variant)}.npy"
+        return self.root / "arrays" / f"{self.key(source, variant)}.npz"
 
     def get_or_compute(
         self,
@@ -110,26 +150,31 @@ class ArrayCache:
     ) -> np.ndarray:
         """The cached array of ``source``, or ``compute()`` stored for next time.
 
-        A corrupt cache entry is named in a warning, removed and recomputed;
-        an exception from ``compute`` propagates and nothing is written.
+        A corrupt or changed cache entry is named in a :class:`CacheEntryWarning`,
+        removed and recomputed; an exception from ``compute`` propagates and
+        nothing is written.
         """
         if not self.enabled:
             return compute()
-        target = self.path_for(source, variant)
+        key = self.key(source, variant)
+        target = self.root / "arrays" / f"{key}.npz"
         if target.exists():
             try:
-                return np.load(target, allow_pickle=False)
+                return _read_entry(target, key)
+            except ChecksumMismatchError:
+                reason = "was changed after it was written (its checksum does not match)"
             except CORRUPT_ENTRY_ERRORS as exc:
-                warnings.warn(
-                    f"corrupt cache entry {target} ({type(exc).__name__}) discarded; recomputing",
-                    RuntimeWarning,
-                    stacklevel=2,
-                )
-                target.unlink(missing_ok=True)
+                reason = f"is corrupt ({type(exc).__name__})"
+            warnings.warn(
+                f"cache entry {target} of {source} {reason}; discarded, reading the file again",
+                CacheEntryWarning,
+                stacklevel=2,
+            )
+            target.unlink(missing_ok=True)
         data = compute()
         try:
             with atomic_path(target) as tmp, open(tmp, "wb") as handle:
-                np.save(handle, data, allow_pickle=False)
+                np.savez(handle, data=data, digest=np.array(_digest(key, data)))
         except OSError:
             pass  # a read-only or full cache folder must not stop the analysis
         return data

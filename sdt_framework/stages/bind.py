@@ -9,18 +9,22 @@ the order :data:`~sdt_framework.stages.spec.ANCHORS` fixes.
 A profile built in Python (``SensorSpec.model_validate({...})``) lists stages
 no registry bound yet. :func:`bind_listed` binds them with the binder the
 layer above installed (:mod:`sdt_framework.registry` installs its
-``default_registry().bind`` when imported, which importing ``sdt_framework``
-does), so the chain below the registry never imports it.
+``default_registry().bind`` when imported, which ``sdt_framework.api`` and
+the registry's users do), so the chain below the registry never imports it.
+sdt's own commands never rely on it: a worker process imports only what it
+unpickles, so the benchmark binds every stage where the sensor or its drawn
+unit is made (:func:`~sdt_framework.stages.draw_unit` takes the stage table).
 """
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any
 
 from pydantic import ValidationError
 
-from ..errors import SDTError, UnknownNameError, validation_summary
+from ..errors import InternalError, SDTError, UnknownNameError, validation_summary
 from ..specs import SensorSpec
 from ..specs.stage_use import StageUse
 from .spec import ANCHORS, StageContext, StageSpec
@@ -118,15 +122,18 @@ def bind_listed(sensor: SensorSpec) -> SensorSpec:
 
     Raises
     ------
-    SDTError
-        Unbound stages and no binder installed (``sdt_framework.registry`` not imported).
+    InternalError
+        Unbound stages and no binder installed (``sdt_framework.registry`` not
+        imported in this process): sdt binds what it runs, so inside sdt this is
+        a bug; a script calling the chain directly binds with ``Registry.bind``.
     """
     if all(use.spec is not None for use in sensor.stages):
         return sensor
     if _binder is None:
-        raise SDTError(
-            f"sensor {sensor.name!r} lists stages no registry bound; bind it first "
-            "with Registry.bind(sensor)"
+        unbound = [use.name for use in sensor.stages if use.spec is None]
+        raise InternalError(
+            f"sensor {sensor.name!r} lists stages {unbound} no registry bound in this process "
+            f"(pid {os.getpid()}); bind it first with Registry.bind(sensor)"
         )
     return _binder(sensor)
 

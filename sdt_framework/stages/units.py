@@ -10,16 +10,18 @@ a tolerance to one parameter leaves the others' draws as they were.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 from pydantic import ValidationError
 
-from ..errors import SDTError, validation_summary
+from ..errors import SDTError, UnknownNameError, validation_summary
 from ..seeding import rng
 from ..specs import MODE_SUFFIX, POINT_SUFFIX, SensorSpec
 from ..specs.stage_use import StageUse, Tolerance
+from .spec import StageSpec
 
-__all__ = ["base_name", "draw", "draw_unit", "has_tolerances"]
+__all__ = ["base_name", "draw", "draw_unit", "drawn_stages", "has_tolerances"]
 
 #: a normal draw is truncated at this many standard deviations
 TRUNCATE_SD = 3.0
@@ -64,12 +66,32 @@ def _merge(into: dict[str, dict[str, float]], more: dict[str, dict[str, float]])
         into.setdefault(axis, {}).update(values)
 
 
-def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
+def drawn_stages(sensor: SensorSpec) -> list[str]:
+    """Names of the stages ``sensor``'s tolerances name (``"stage.parameter"``), sorted."""
+    return sorted({key.partition(".")[0] for key in sensor.tolerances if "." in key})
+
+
+def _added(name: str, params: dict[str, float], per_axis: Any, stages: Mapping | None) -> StageUse:
+    """A stage a tolerance adds to a unit, bound to its spec in ``stages`` when given."""
+    if stages is None:
+        return StageUse(name=name, params=params, per_axis=per_axis)
+    if name not in stages:
+        raise UnknownNameError("stage", name, stages, note="(named by a tolerance)")
+    return StageUse(name=name, params=params, per_axis=per_axis, spec=stages[name])
+
+
+def draw_unit(
+    sensor: SensorSpec, seed: int, k: int, stages: Mapping[str, StageSpec] | None = None
+) -> SensorSpec:
     """Unit ``k`` of ``sensor``: every toleranced value drawn, tolerances dropped.
 
     A tolerance ``"stage.parameter"`` applies to the listed stage of that
     name, or adds the stage (nominal value 0) to the unit when the profile
-    does not list it: a profile's nominal chain stays as it is. A tolerance
+    does not list it: a profile's nominal chain stays as it is. An added stage
+    is bound to its spec in ``stages`` (name -> spec, e.g. the registry's
+    stages the benchmark's job carries), so the unit's chain needs no registry
+    in the process that runs it (a worker process imports none); without
+    ``stages`` it is bound when its chain is compiled. A tolerance
     with ``per_axis`` spreads draws the Y and Z values of the parameter on
     their own streams (the stage's ``per_axis``).
 
@@ -98,7 +120,7 @@ def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
             continue
         nominal = float(getattr(sensor, key))
         update[key] = draw(tolerance, nominal, seed, "unit", base, k, key)
-    stages = []
+    uses = []
     for i, use in enumerate(sensor.stages):
         params = dict(use.params)
         axes = {axis: dict(values) for axis, values in (use.per_axis or {}).items()}
@@ -109,14 +131,14 @@ def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
             _merge(axes, _draw_axes(use.tolerances[key], use, key, nominal, *where))
         params.update(added.pop(use.name, {}))
         _merge(axes, added_axes.pop(use.name, {}))
-        stages.append(
+        uses.append(
             use.model_copy(update={"params": params, "tolerances": {}, "per_axis": axes or None})
         )
-    stages += [
-        StageUse(name=name, params=params, per_axis=added_axes.get(name) or None)
+    uses += [
+        _added(name, params, added_axes.get(name) or None, stages)
         for name, params in sorted(added.items())
     ]
-    update["stages"] = tuple(stages)
+    update["stages"] = tuple(uses)
     data = {**sensor.model_dump(), **update}
     try:
         unit = SensorSpec.model_validate({**data, "stages": ()})
@@ -125,7 +147,7 @@ def draw_unit(sensor: SensorSpec, seed: int, k: int) -> SensorSpec:
             f"sensor {sensor.name!r}, unit {k}: a drawn value is out of range "
             f"({validation_summary(exc)}); lower its tolerance's spread"
         ) from None
-    unit = unit.model_copy(update={"stages": tuple(stages)})
+    unit = unit.model_copy(update={"stages": tuple(uses)})
     if any(use.spec is None for use in unit.stages):
         return unit  # bound (and checked) when its chain is compiled
     for use in unit.stages:

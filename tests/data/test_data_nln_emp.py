@@ -110,7 +110,7 @@ def test_cache_hit_and_invalidation(tree: Path, tmp_path: Path, monkeypatch) -> 
     cache = tmp_path / "cache"
     rec = open_nln_emp(tree, channels="ch1", cache_dir=cache).recordings()[0]
     first = rec.load()
-    assert len(calls) == 1 and list((cache / "arrays").glob("*.npy"))
+    assert len(calls) == 1 and list((cache / "arrays").glob("*.npz"))
     again = open_nln_emp(tree, channels="ch1", cache_dir=cache).recordings()[0].load()
     assert len(calls) == 1
     np.testing.assert_array_equal(first, again)

@@ -1,5 +1,6 @@
 """Every environment error reaching the top of `sdt` is one line with exit 2; Ctrl-C is one
-line with exit 130; a genuine bug keeps its traceback.
+line with exit 130; a genuine bug is an `internal error:` line with exit 70 (its traceback
+under SDT_DEBUG=1, as for every error).
 
 Real failures are used where the operating system produces them for any user (a file where
 a folder is expected, a folder where a file is expected); the others (permission denied,
@@ -114,16 +115,20 @@ def test_memory_error_is_one_line(monkeypatch, capsys):
 def test_sdt_debug_shows_the_traceback_of_an_os_error(monkeypatch, capsys):
     monkeypatch.setenv("SDT_DEBUG", "1")
     inject(monkeypatch, PermissionError(errno.EACCES, "Permission denied", "/x"))
-    monkeypatch.setattr(sys, "argv", ["sdt", "sensors", "list"])
-    with pytest.raises(PermissionError):
-        main()
+    status, _, err = run_main(monkeypatch, capsys, "sensors", "list")
+    assert status == 2
+    assert "Traceback (most recent call last)" in err and "PermissionError" in err
+    assert err.strip().splitlines()[-1].startswith("error: '/x': Permission denied")
 
 
-def test_a_genuine_bug_keeps_its_traceback(monkeypatch, capsys):
+def test_a_genuine_bug_is_an_internal_error_with_exit_70(monkeypatch, capsys):
     inject(monkeypatch, ZeroDivisionError("a bug"))
-    monkeypatch.setattr(sys, "argv", ["sdt", "sensors", "list"])
-    with pytest.raises(ZeroDivisionError):
-        main()
+    status, _, err = run_main(monkeypatch, capsys, "sensors", "list")
+    assert status == 70
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "Traceback" not in err, err
+    assert lines[0].startswith("internal error: ZeroDivisionError: a bug")
+    assert "this is a bug in sdt" in lines[0]
 
 
 def test_ctrl_c_is_one_line_and_exit_130(monkeypatch, capsys):

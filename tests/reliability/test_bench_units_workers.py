@@ -1,0 +1,67 @@
+"""``sdt benchmark --units N`` as the README writes it, with the default worker processes.
+
+A drawn unit adds the stages its tolerances name (the ADXL345's ``temperature.
+tempco_mg_per_c``). Those stages used to be bound by a binder that importing
+the registry installs: the parent process had one, a loky or Dask worker
+(which imports only what it unpickles) did not, so every ``--units`` run with
+the default ``--jobs`` stopped with "lists stages no registry bound". Each run
+here goes through the real command; the results must equal a ``--jobs 1`` run
+(the seeds do not depend on the process a recording is featurised in).
+The data is cut to one machine and one channel to keep the runs short.
+"""
+
+from __future__ import annotations
+
+import pandas as pd
+from distributed import LocalCluster
+
+CUT = ("--machines", "Motor-2", "--channels", "ch1")
+
+
+def _results(folder) -> pd.DataFrame:
+    table = pd.read_csv(folder / "results.csv").drop(columns="fit_seconds")
+    return table.sort_values(["scenario", "sensor", "classifier", "unit", "repeat"]).reset_index(
+        drop=True
+    )
+
+
+def _run(sdt, tmp_path, name: str, *args: str) -> pd.DataFrame:
+    out = tmp_path / name
+    done = sdt("benchmark", "--quick", *args, *CUT, "--no-report", "--out", str(out))
+    assert done.returncode == 0, done.stderr
+    assert "no registry bound" not in done.stderr
+    return _results(out)
+
+
+def test_units_with_default_jobs_equal_jobs_1(sdt, tmp_path):
+    args = ("--units", "3", "--sensors", "adxl345", "--classifiers", "lr")
+    default = _run(sdt, tmp_path, "default", *args)
+    single = _run(sdt, tmp_path, "jobs1", *args, "--jobs", "1")
+    # 3 scenarios x 3 units x 2 repeats, every run scored, units really differ
+    assert len(default) == 18 and (default["status"] == "ok").all()
+    assert sorted(default["unit"].unique()) == [0, 1, 2]
+    assert default.groupby("unit")["macro_f1"].mean().nunique() > 1
+    pd.testing.assert_frame_equal(default, single)
+
+
+def test_readme_units_at_85c_with_default_jobs_and_on_dask_equal_jobs_1(sdt, tmp_path):
+    """The README's ``--units 5 ... adxl355[errors=datasheet,temp=85c]`` block (one classifier)."""
+    args = (
+        "--units",
+        "5",
+        "--sensors",
+        "adxl345,adxl355[errors=datasheet,temp=85c]",
+        "--classifiers",
+        "lr",
+    )
+    default = _run(sdt, tmp_path, "default", *args)
+    single = _run(sdt, tmp_path, "jobs1", *args, "--jobs", "1")
+    with LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    ) as cluster:
+        on_dask = ("--backend", "dask", "--scheduler", cluster.scheduler_address)
+        dask = _run(sdt, tmp_path, "dask", *args, *on_dask)
+    assert len(default) == 3 * 2 * 5 * 2 and (default["status"] == "ok").all()
+    assert default["sensor"].nunique() == 2
+    pd.testing.assert_frame_equal(default, single)
+    pd.testing.assert_frame_equal(default, dask)
