@@ -78,3 +78,15 @@ def test_a_shock_recording_is_judged_with_its_floor_from_quiet_seconds(sdt, meas
     assert out["clipped"]["device_clipping"] == {"count": 0, "share": 0.0, "axes": {}}
     twin = out["clipped"]["twin_clipping"]
     assert twin["count"] == sum(twin["axes"].values())
+
+
+def test_the_clock_error_is_read_against_the_rate_setting_the_device_runs_at(sdt):
+    """An ADXL357 set to 500 Hz is a fraction of a percent off its setting, not -87 % off 4000 Hz."""
+    t_dev, _ = _raw(80)
+    rate = (len(t_dev) - 1) / (t_dev[-1] - t_dev[0])  # timestamps alone, as idelib gives them
+    run = sdt("twin", "check", str(FILE), "--sensor", "adxl357")
+    assert run.returncode == 0, run.stderr
+    line = next(x for x in run.stdout.splitlines() if x.startswith("alignment:"))
+    assert "from the 500 Hz setting of 4000" in line
+    printed = float(line.split("(")[1].split(" %")[0])
+    assert abs(printed - 100 * (rate / 500 - 1)) < 0.1
