@@ -28,11 +28,12 @@ def _intro(comparison: Comparison) -> Paragraph:
         f"Each sensor against the reference `{comparison.baseline}`, runs paired by machine, "
         f"scenario, classifier and repetition, at a margin of ±{comparison.margin:g} Macro F1. "
         "Δ is the sensor's Macro F1 minus the reference's, with its 95 % interval over "
-        "repetitions in brackets. **equivalent**: the 95 % intervals over repetitions and over "
-        "resampled test recordings both lie inside ±margin; **worse** / **better**: both lie "
-        "below −margin / above +margin; otherwise **inconclusive**, with the reason. "
-        "`sdt compare` prints the per-cell table and writes comparison.csv; the statistics are "
-        "explained in docs/report.md."
+        "repetitions in brackets and, where per-recording counts exist, its 95 % interval "
+        "over resampled test recordings (recording CI). **equivalent**: the 95 % intervals "
+        "over repetitions and over resampled test recordings both lie inside ±margin; "
+        "**worse** / **better**: both lie below −margin / above +margin; otherwise "
+        "**inconclusive**, with the reason. `sdt compare` prints the per-cell table and "
+        "writes comparison.csv; the statistics are explained in docs/report.md."
     )
 
 
