@@ -74,3 +74,11 @@ def test_node_toml_is_shown_where_results_node_is_used(tmp_path):
     config = load_config(path, {})
     assert config.sample == "node" and config.repeats == 3
     assert list(config.axes.values()) == ["x", "y", "z"]
+
+
+def test_readme_links_the_paper_and_the_nln_emp_download():
+    """The paper (its DOI, as its own supplementary-materials link gives it) and the data."""
+    assert "https://doi.org/10.3390/machines14101113" in TEXT
+    nln = "https://doi.org/10.4121/2b61183e-c14f-4131-829b-cc4822c369d0"
+    at = TEXT.index("- **NLN-EMP**")
+    assert nln in TEXT[:1500] and nln in TEXT[at : at + 400]
