@@ -27,10 +27,9 @@ from typing import Any
 
 import numpy as np
 
-from .discovery import load_entry_point
 from .errors import SDTError, validation_summary
 from .parts import PartSpec, all_modes, resolve
-from .registry import Registry, build_registry
+from .registry import Registry, build_registry, load_entry_point
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
 from .stages import StageContext, StageSpec
 

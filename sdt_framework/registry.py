@@ -33,6 +33,7 @@ from .discovery import (
     discover,
     filter_note,
     filter_warnings,
+    load_entry_point,
     plugin_object,
 )
 from .errors import DuplicateNameError, PluginLoadError, validation_summary
@@ -43,7 +44,8 @@ from .specs import POINT_SUFFIX, ClassifierSpec, DatasetSpec, FeatureSetSpec, Se
 from .stages.bind import install_stage_binder
 from .stages.spec import StageSpec
 
-__all__ = ["HOOKS", "Registry", "build_registry", "default_registry"]
+#: ``load_entry_point`` is re-exported for :mod:`.conformance`, which sits above the registry
+__all__ = ["HOOKS", "Registry", "build_registry", "default_registry", "load_entry_point"]
 
 #: hook name -> spec type it registers
 HOOKS: dict[str, type[Spec]] = {
