@@ -13,6 +13,11 @@ Example
 >>> from sdt_framework.conformance import check_plugin
 >>> import my_sdt_plugin
 >>> check_plugin(my_sdt_plugin)          # raises ConformanceError on failure
+>>> check_plugin("my_package.plugin:MyPlugin")  # the entry point's value, loaded as sdt does
+
+A plugin is a module, an instance or a class (instantiated without arguments,
+as discovery does); a string is an entry point's value and is imported the way
+``sdt`` imports it, so the form declared in ``pyproject.toml`` is what is checked.
 """
 
 from __future__ import annotations
@@ -22,9 +27,9 @@ from typing import Any
 
 import numpy as np
 
-from .errors import SDTError
+from .errors import SDTError, validation_summary
 from .parts import PartSpec, all_modes, resolve
-from .registry import Registry, build_registry
+from .registry import Registry, build_registry, load_entry_point
 from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
 from .stages import StageContext, StageSpec
 
@@ -195,14 +200,25 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
     Parameters
     ----------
     plugin
-        A plugin module or object implementing sdt-framework hooks.
+        A plugin module, instance or class implementing sdt-framework hooks, or
+        the value of its entry point (``"my_package.plugin:MyPlugin"``), loaded
+        exactly as ``sdt`` loads entry points.
     installed
         Registry of the other plugins to check name clashes against (default:
         everything installed; an installed copy of ``plugin`` itself, with an
         identical definition, is not a clash).
     """
+    name = None
+    if isinstance(plugin, str):
+        name = plugin
+        try:
+            plugin = load_entry_point(plugin)
+        except Exception as exc:
+            raise ConformanceError(
+                f"entry point {plugin!r} failed to load: {validation_summary(exc)}"
+            ) from None
     fresh = build_registry(entry_points=False)
-    info = fresh.register_plugin(plugin)
+    info = fresh.register_plugin(plugin, name)
     if info.status != "loaded":
         raise ConformanceError(f"plugin {info.name!r} failed to register: {info.error}")
     installed = installed if installed is not None else build_registry()

@@ -5,7 +5,8 @@ Entry points of the ``sdt_framework`` group are found and sorted by
 ``SDT_PLUGINS`` (load only these) and ``SDT_BLOCK_PLUGINS`` (never load these)
 select among them, matching a plugin's entry-point name or its distribution
 name. A plugin that fails to import becomes a :class:`PluginInfo` with status
-``error`` instead of crashing the program. A switch naming nothing installed
+``error`` instead of crashing the program. An entry point may name a module, an instance, or a
+class (instantiated without arguments: :func:`plugin_object`). A switch naming nothing installed
 is reported (:func:`filter_warnings`), and an unknown name looked up while a
 switch left plugins out says so (:func:`filter_note`).
 """
@@ -13,6 +14,7 @@ switch left plugins out says so (:func:`filter_note`).
 from __future__ import annotations
 
 import importlib.metadata as md
+import inspect
 import os
 import re
 from collections.abc import Mapping, Sequence
@@ -31,6 +33,8 @@ __all__ = [
     "discover",
     "filter_note",
     "filter_warnings",
+    "load_entry_point",
+    "plugin_object",
 ]
 
 ENV_ONLY = "SDT_PLUGINS"
@@ -70,6 +74,37 @@ class LoadedPlugin:
 
     obj: Any
     info: PluginInfo
+
+
+def plugin_object(obj: Any) -> Any:
+    """The object whose hooks are registered for ``obj``: a class is instantiated.
+
+    A plugin may be a module, an instance, or a class. pluggy would register a
+    class's functions unbound, so ``def register_sensors(self, register)`` would
+    be called without ``self``; the class is instantiated with no arguments
+    instead (hooks written as static methods work either way). A class that
+    needs arguments raises a :class:`TypeError` saying to name an instance.
+    """
+    if not inspect.isclass(obj):
+        return obj
+    try:
+        return obj()
+    except TypeError as exc:
+        raise TypeError(
+            f"plugin class {obj.__qualname__} cannot be instantiated without arguments "
+            f"({exc}); name a module or an instance of it instead"
+        ) from None
+
+
+def load_entry_point(value: str, name: str = "") -> Any:
+    """Import ``value`` (``'package.module'`` or ``'package.module:attr'``) as discovery does.
+
+    Returns the plugin object (:func:`plugin_object` of what it names), so
+    :func:`sdt_framework.conformance.check_plugin` can check the exact form an
+    entry point declares.
+    """
+    entry = md.EntryPoint(name=name or value, value=value, group=PROJECT)
+    return plugin_object(entry.load())
 
 
 def _norm(name: str) -> str:
@@ -117,7 +152,7 @@ def discover(environ: Mapping[str, str] | None = None) -> list[LoadedPlugin | Pl
             results.append(info)
             continue
         try:
-            obj = ep.load()
+            obj = plugin_object(ep.load())
         except Exception as exc:
             info.status = "error"
             info.error = f"import of {ep.value} failed: {validation_summary(exc)}"

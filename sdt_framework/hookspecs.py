@@ -3,7 +3,8 @@
 Each hook receives a ``register`` callback and calls it once per thing the
 plugin provides. The callback validates the spec (a spec instance or a dict of
 its fields), stamps the plugin and distribution on it and rejects duplicate
-names, so a plugin never repeats those checks. A plugin module implements any
+names, so a plugin never repeats those checks. A plugin (a module, a class,
+instantiated without arguments, or an instance) implements any
 subset of these hooks with ``@sdt_framework.hookimpl`` and is announced through
 the ``sdt_framework`` entry-point group.
 """

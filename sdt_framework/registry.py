@@ -26,7 +26,16 @@ import pluggy
 from pydantic import ValidationError
 
 from . import hookspecs
-from .discovery import ENV_TRACE, LoadedPlugin, PluginInfo, discover, filter_note, filter_warnings
+from .discovery import (
+    ENV_TRACE,
+    LoadedPlugin,
+    PluginInfo,
+    discover,
+    filter_note,
+    filter_warnings,
+    load_entry_point,
+    plugin_object,
+)
 from .errors import DuplicateNameError, PluginLoadError, validation_summary
 from .parts import PartSpec
 from .registry_lookup import RegistryLookup
@@ -35,7 +44,8 @@ from .specs import POINT_SUFFIX, ClassifierSpec, DatasetSpec, FeatureSetSpec, Se
 from .stages.bind import install_stage_binder
 from .stages.spec import StageSpec
 
-__all__ = ["HOOKS", "Registry", "build_registry", "default_registry"]
+#: ``load_entry_point`` is re-exported for :mod:`.conformance`, which sits above the registry
+__all__ = ["HOOKS", "Registry", "build_registry", "default_registry", "load_entry_point"]
 
 #: hook name -> spec type it registers
 HOOKS: dict[str, type[Spec]] = {
@@ -80,7 +90,10 @@ class Registry(RegistryLookup):
         distribution: str = IN_PROCESS,
         version: str = "",
     ) -> PluginInfo:
-        """Register a plugin object or module and collect what its hooks provide.
+        """Register a plugin module, object or class and collect what its hooks provide.
+
+        A class is instantiated without arguments (:func:`discovery.plugin_object`),
+        as it is when an entry point names it.
 
         Hook implementations whose argument names are not in the spec are
         rejected by pluggy; a misspelled hook name is rejected here. A hook
@@ -90,6 +103,12 @@ class Registry(RegistryLookup):
         """
         name = name or getattr(plugin, "__name__", None) or type(plugin).__name__
         info = PluginInfo(name, distribution, version, "loaded")
+        try:
+            plugin = plugin_object(plugin)
+        except TypeError as exc:
+            info.status, info.error = "error", str(exc)
+            self._plugins.append(info)
+            return info
         return self._collect(LoadedPlugin(plugin, info))
 
     def add(self, spec: Spec | Mapping[str, Any], kind: type[Spec] | None = None) -> Spec:

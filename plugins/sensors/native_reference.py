@@ -15,7 +15,7 @@ from sdt_framework import SensorSpec, hookimpl
 NATIVE_REFERENCE = SensorSpec(
     name="native-reference",
     description="Reference: the recording as is, at its own rate (identity chain)",
-    source="SPEC section 9: the reference follows the data",
+    source="docs/sensors.md: the reference follows the data",
     sampling_rate_hz="native",
     full_scale_g=None,
     adc_bits=None,

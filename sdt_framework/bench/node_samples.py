@@ -56,6 +56,29 @@ def _node(name: str, channels: Sequence[str], axes: Mapping[str, str]) -> Node:
     return Node(name, (by_axis["x"], by_axis["y"], by_axis["z"]))
 
 
+def _check_names_and_channels(named: Mapping[str, Sequence[str]]) -> None:
+    """Refuse an empty or blank node name and a channel two nodes claim.
+
+    An empty name labelled rows ``adxl345 @ `` (unreadable, and the same label
+    for every such node); a channel in two nodes made one recording count as
+    two samples of two nodes, so both nodes and the channel are named.
+    """
+    owner: dict[str, str] = {}
+    for name, channels in named.items():
+        if not name.strip() or name != name.strip():
+            raise SDTError(
+                f"sample = 'node': [benchmark] nodes has a node named {name!r}; give each node "
+                f"a non-blank name without surrounding spaces, e.g. nodes = {{de = [...]}}"
+            )
+        for channel in dict.fromkeys(channels):
+            if channel in owner:
+                raise SDTError(
+                    f"sample = 'node': channel {channel!r} is in node {owner[channel]!r} and in "
+                    f"node {name!r}; a channel belongs to one node (one sensor records it)"
+                )
+            owner[channel] = name
+
+
 def resolve_nodes(
     axes: Mapping[str, str],
     named: Mapping[str, Sequence[str]] | None,
@@ -75,6 +98,7 @@ def resolve_nodes(
             f"x, y and z ({EXAMPLE})"
         )
     if named:
+        _check_names_and_channels(named)
         nodes = [_node(name, list(channels), axes) for name, channels in named.items()]
     else:
         if sorted(axes.values()) != list(AXES):

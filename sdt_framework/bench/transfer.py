@@ -27,7 +27,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
-from ..errors import SDTError
+from ..errors import SDTError, one_line
 from ..parts import split_names
 from ..specs import SensorSpec
 
@@ -52,16 +52,32 @@ class Transfer:
         return f"{self.train_label} -> {self.test}"
 
 
+#: at most this many characters of a user's entry are echoed in a message
+ECHO = 100
+
+
+def _echo(entry: str) -> str:
+    """``entry`` as a message quotes it: whole if short, else its start and its size.
+
+    A 2000-sensor entry was echoed whole (16 KB on one line) by every message.
+    """
+    if len(entry) <= ECHO:
+        return repr(entry)
+    names = len(split_names(entry.partition("->")[2])) if "->" in entry else 0
+    count = f", {names} test chains" if names else ""
+    return f"{one_line(entry, ECHO)!r} ({len(entry)} characters{count})"
+
+
 def _resolve(name: str, entry: str, lookup: Callable[[str], SensorSpec], reference: str) -> str:
     name = name.strip()
     if not name:
-        raise SDTError(f"transfer {entry!r}: an empty chain name; write 'TRAIN -> TEST'")
+        raise SDTError(f"transfer {_echo(entry)}: an empty chain name; write 'TRAIN -> TEST'")
     if name == "reference":
         name = reference
     try:
         return lookup(name).name
     except SDTError as exc:
-        raise SDTError(f"transfer {entry!r}: {exc}") from None
+        raise SDTError(f"transfer {_echo(entry)}: {one_line(exc, 400)}") from None
 
 
 def parse_transfers(
@@ -86,15 +102,20 @@ def parse_transfers(
         left, _, right = entry.partition("->")
         train = tuple(_resolve(n, entry, lookup, reference) for n in left.split("+"))
         if len(set(train)) != len(train):
-            raise SDTError(f"transfer {entry!r}: a training chain is named twice")
+            raise SDTError(f"transfer {_echo(entry)}: a training chain is named twice")
         names = split_names(right) if right.strip() != "*" else None
+        if names == []:
+            raise SDTError(
+                f"transfer {_echo(entry)}: no test chain after '->'; write 'TRAIN -> TEST' "
+                f"(several: 'TRAIN -> A,B'; every other sensor: 'TRAIN -> *')"
+            )
         tests = (
             [s for s in sensors if s != train[0]]
             if names is None
             else [_resolve(n, entry, lookup, reference) for n in names]
         )
         if not tests:
-            raise SDTError(f"transfer {entry!r}: '*' leaves no sensor besides {train[0]}")
+            raise SDTError(f"transfer {_echo(entry)}: '*' leaves no sensor besides {train[0]}")
         for test in tests:
             pair = Transfer(train, test)
             if pair not in out:

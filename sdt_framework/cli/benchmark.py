@@ -114,7 +114,7 @@ def benchmark(
         None,
         "--sample",
         help="channel (default, the paper's) or node: one sample per window per triaxial node "
-        "([benchmark] axes, nodes).",
+        "(config keys axes and nodes in \\[benchmark]).",
     ),
     classifiers: str | None = typer.Option(None, "--classifiers", help="Comma-separated."),
     features: str | None = typer.Option(None, "--features", help="Feature set, e.g. paper8."),
@@ -167,7 +167,7 @@ def benchmark(
 
       sdt benchmark --quick --sensors "adxl355\\[range=8g],iis3dwb,mpu6050"
 
-      sdt benchmark --data /data/NLN-EMP --out results/nln --jobs 2
+      sdt benchmark --data ~/data/NLN-EMP --out results/nln   # needs NLN-EMP downloaded (README)
 
       sdt benchmark --quick --units 5
 

@@ -29,7 +29,7 @@ def degrade_command(
     ] = 0,
     overwrite: Annotated[bool, typer.Option("--overwrite", help=OVERWRITE_HELP)] = False,
 ) -> None:
-    """Degrade a recording to what SENSOR would have recorded (SPEC section 2).
+    """Degrade a recording to what SENSOR would have recorded (docs/chain.md).
 
     INPUT is 1-D (one acquisition) or 2-D (rows = acquisitions, each a whole
     continuous acquisition). The output keeps that shape convention. A CSV is
@@ -42,7 +42,10 @@ def degrade_command(
 
     Example:
 
-      sdt degrade pump.npy --sensor adxl345 --fs 20000 --seed 0 --out pump_adxl345.npy
+      sdt dataset synth --out data/synthetic --duration 2   # makes the input below
+
+      sdt degrade data/synthetic/Vibration/Motor-2/100/healthy\\ 1/*-ch1.csv \\
+        --sensor adxl345 --fs 20000 --seed 0 --out healthy_adxl345.npy
     """
     from ..chain import degrade  # scipy.signal: imported on use so `sdt --help` starts fast
     from ..data.signal_sizes import DEGRADE_BYTES_PER_SAMPLE
@@ -175,11 +178,9 @@ def validate_noise_command(
 
       sdt validate-noise --sensor adxl345 --json
 
-      sdt validate-noise --sensor adxl345 --recording x_axis.csv --unit lsb --scale 0.0039
-
       sdt validate-noise --sensor adxl357 --windows 4096 --yes --plot noise.png
 
-      sdt validate-noise --sensor adxl345 --recording SSX_Data.IDE --windows 4
+      sdt validate-noise --sensor adxl345 --recording tests/data/endaq/SSX_Data.IDE --windows 4
     """
     from ..data.ide import is_ide
     from ..data.sizes import Cost

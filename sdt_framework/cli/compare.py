@@ -208,9 +208,11 @@ def compare(
 
       sdt compare results/first-look --baseline adxl357 --margin 0.05 --json
 
-      sdt compare results/paper8 results/my-features
+      sdt benchmark --quick --feature-dtype float16 --out results/float16
 
-      sdt compare /archive/run-1 --out results/run-1-verdict
+      sdt compare results/first-look results/float16
+
+      sdt compare results/first-look --out results/verdict   # e.g. from a read-only folder
     """
     from ..bench.results import write_frame
     from ..report.load import load_results

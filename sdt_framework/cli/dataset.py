@@ -152,11 +152,11 @@ def inspect(
 
     Example:
 
-      sdt dataset inspect SSX66115.IDE
+      sdt dataset inspect tests/data/endaq/SSX66115.IDE
 
-      sdt dataset inspect ~/data/NLN-EMP --validate
+      sdt dataset synth --out data/synthetic --duration 2   # an NLN-EMP-shaped folder
 
-      sdt dataset inspect my_manifest.csv --json
+      sdt dataset inspect data/synthetic --validate
 
       sdt dataset inspect synthetic-pump
     """

@@ -108,7 +108,12 @@ def extract_features(
 
     Example:
 
-      sdt features extract adxl345.npy --fs 3200 --set paper8 --out features.parquet
+      sdt dataset synth --out data/synthetic --duration 2   # makes the next line's input
+
+      sdt degrade data/synthetic/Vibration/Motor-2/100/healthy\\ 1/*-ch1.csv \\
+        --sensor adxl345 --fs 20000 --out healthy_adxl345.npy
+
+      sdt features extract healthy_adxl345.npy --fs 3200 --set paper8 --out features.parquet
     """
     from ..data.signal_sizes import FEATURES_BYTES_PER_SAMPLE
     from ..features import extract, resolve_feature_set, write_feature_table

@@ -74,7 +74,9 @@ def root(
 
       sdt sensors list
 
-      sdt --sensor-file my_sensor.toml sensors show my-sensor
+      sdt twin fit tests/data/endaq/SSX_Data.IDE --sensor adxl345 --out adxl345-fitted.toml
+
+      sdt --sensor-file adxl345-fitted.toml sensors show adxl345-fitted
     """
     ctx.ensure_object(dict)
     ctx.obj["sensor_files"] = sensor_file

@@ -48,7 +48,7 @@ def report(
 
       sdt report results/first-look --format html
 
-      sdt report /archive/run-1 --out results/run-1-report
+      sdt report results/first-look --out results/first-look-report   # e.g. from a read-only folder
     """
     from ..report import write_report  # matplotlib only when a report is drawn
 

@@ -173,7 +173,7 @@ def _modes_text(part: PartSpec) -> str:
             values = [mode.label_value(label) for label in labels]
             text = f"{_span(values, mode.unit)} ({len(labels)})"
         else:
-            text = ",".join(labels)
+            text = ", ".join(labels)  # spaces let a narrow table wrap the list
         lines.append(f"{key}: {text}; default {mode.default}")
     return "\n".join(lines) or "-"
 

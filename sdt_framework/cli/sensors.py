@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import typer
+from rich.table import Table
 
 from ..specs import SensorSpec
 from . import sensor_views as views
-from .common import console, print_json, registry, table
+from .common import console, print_json, print_table, registry, table
 
 app = typer.Typer(help="List and inspect sensor profiles and parts.", no_args_is_help=True)
 
@@ -31,6 +32,46 @@ def _profile_row(s: SensorSpec) -> list[object]:
         digital,
         s.distribution,
     ]
+
+
+def _widths(columns: list[str], cells: list[list[str]]) -> list[int]:
+    """Column widths that fit the console and never split a word (a name or a number).
+
+    Each column gets its longest word; what the console has left is shared out
+    in proportion to how much more each column's longest line would take. When
+    even the longest words do not fit, the natural widths are returned and
+    :func:`print_table` prints the rows as lines.
+    """
+    texts = [[column, *(row[i] for row in cells)] for i, column in enumerate(columns)]
+    words = [max((len(w) for t in col for w in t.split()), default=1) for col in texts]
+    lines = [max((len(line) for t in col for line in t.splitlines()), default=1) for col in texts]
+    spare = console.width - (3 * len(columns) + 1) - sum(words)  # borders and padding
+    if spare < 0:
+        return lines
+    want = [max(0, line - word) for line, word in zip(lines, words, strict=True)]
+    total = sum(want) or 1
+    extra = [min(w, spare * w // total) for w in want]
+    return [word + add for word, add in zip(words, extra, strict=True)]
+
+
+def _table_by_distribution(title: str, columns: list[str], rows: list[list[object]]) -> None:
+    """A table whose last column is the distribution; one shared distribution goes in the title.
+
+    Every built-in profile comes from sdt-framework and every catalogue part from
+    sdt-sensors-catalog: a column repeating one long word on every row is what
+    kept the table from fitting 80 columns, so it is named once instead.
+    """
+    shared = {str(row[-1]) for row in rows}
+    if len(shared) == 1:
+        title = f"{title}; distribution {shared.pop()}"
+        columns, rows = columns[:-1], [row[:-1] for row in rows]
+    cells = [["" if cell is None else str(cell) for cell in row] for row in rows]
+    out = Table(title=title, title_justify="left")
+    for column, width in zip(columns, _widths(columns, cells), strict=True):
+        out.add_column(column, width=width)
+    for row in cells:
+        out.add_row(*row)
+    print_table(out)
 
 
 @app.command("list")
@@ -80,7 +121,7 @@ def list_sensors(
         print_json(out)
         return
     if profiles:
-        table(
+        _table_by_distribution(
             "Sensor profiles (paper Table 1)",
             ["name", "rate Hz", "±g", "bits", "NSD µg/√Hz", "f_mech Hz", "f_ana Hz",
              "f_dig Hz (order)", "distribution"],
@@ -89,7 +130,7 @@ def list_sensors(
     if not profiles and not parts:
         console.print("No sensor profile or part matches these filters.")
     if parts:
-        table(
+        _table_by_distribution(
             "Parts: use as name or name[key=option,...] (sdt sensors show NAME)",
             [
                 "part",

@@ -83,11 +83,14 @@ def check(
 
     Example:
 
-      sdt twin check SSX66115.IDE --sensor adxl345 --plot ssx.png
+      sdt twin check tests/data/endaq/SSX66115.IDE --sensor adxl345 --plot ssx.png
 
-      sdt twin check DAQ12006_000005.IDE --sensor adxl357 --reference-scale 1.626
+      sdt twin check tests/data/endaq/DAQ12006_000005.IDE --sensor adxl357 --reference-scale 1.626
 
-      sdt --sensor-file fitted.toml twin check SSX66115.IDE --sensor adxl345-fitted --json
+      sdt twin fit tests/data/endaq/SSX_Data.IDE --sensor adxl345 --out adxl345-fitted.toml
+
+      sdt --sensor-file adxl345-fitted.toml twin check tests/data/endaq/SSX66115.IDE \\
+        --sensor adxl345-fitted --json
     """
     from ..twin import check_twin
     from ..twin.clipping import describe
@@ -185,9 +188,10 @@ def fit(
 
     Example:
 
-      sdt twin fit SSX_Data.IDE --sensor adxl345 --out adxl345-fitted.toml
+      sdt twin fit tests/data/endaq/SSX_Data.IDE --sensor adxl345 --out adxl345-fitted.toml
 
-      sdt --sensor-file adxl345-fitted.toml twin check SSX66115.IDE --sensor adxl345-fitted
+      sdt --sensor-file adxl345-fitted.toml twin check tests/data/endaq/SSX66115.IDE \\
+        --sensor adxl345-fitted
     """
     from ..io import atomic_write_text
     from ..twin.fit import fit_twin, profile_toml

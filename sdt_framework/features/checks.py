@@ -74,7 +74,7 @@ def check_bands(spec: FeatureSetSpec, fs: float, window_length: int) -> None:
             f"feature set {spec.name!r}: the band {band.describe()} of "
             f"{', '.join(band.features)} holds no FFT bin at fs={fs:g} Hz (Nyquist {fs / 2:g} Hz, "
             f"{window_length}-sample windows), so those features would be 0; {fix} "
-            f"(SPEC section 3); check the sampling rate given (--fs)"
+            f"(docs/features.md, Windows); check the sampling rate given (--fs)"
         )
 
 

@@ -185,9 +185,7 @@ def resolve(part: PartSpec, given: Mapping[str, str] | None = None) -> Resolved:
         if field not in entries:  # only the model's orders may be missing
             numbers[field] = MODEL_ORDERS[field]
             sources.append(
-                FieldSource(
-                    field, MODEL_ORDERS[field], "chain model", "SPEC section 2", "model", ""
-                )
+                FieldSource(field, MODEL_ORDERS[field], "chain model", "docs/chain.md", "model", "")
             )
             continue
         entry, set_by = entries[field]

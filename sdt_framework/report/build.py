@@ -20,7 +20,7 @@ from .render import render_html, render_markdown
 from .style import sensor_colors
 from .tables import allocation_table, delta_table, failed_table, table4_table
 from .units import unit_blocks
-from .verdict import verdict_blocks
+from .verdict import missing_reference_note, verdict_blocks
 
 __all__ = ["CAPTIONS", "FORMATS", "build_blocks", "write_report"]
 
@@ -150,11 +150,12 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     ]
     delta = delta_table(folder.results, folder.sensors, folder.reference)
     blocks.append(Heading(f"Delta to the reference ({folder.reference})", 2))
-    blocks.append(
-        delta
-        if delta is not None
-        else Paragraph(f"Not shown: the reference sensor {folder.reference} has no successful run.")
-    )
+    note = missing_reference_note(folder)
+    if delta is None or note is not None:
+        text = note or f"Not shown: the reference sensor {folder.reference} has no successful run."
+        blocks.append(Paragraph(text))
+    else:
+        blocks.append(delta)
     if not folder.failed.empty:
         blocks += [Heading("Failed runs", 2), failed_table(folder.failed)]
     blocks += _saturation(folder)

@@ -18,6 +18,11 @@ from .document import Block, Code, Figure, Heading, Items, Paragraph, Table
 __all__ = ["render_html", "render_markdown"]
 
 _BOLD = re.compile(r"\*\*(.+?)\*\*")
+#: C0 and C1 controls and DEL except newline and tab, and Unicode format characters
+#: (bidirectional overrides): the same set ``sdt`` shows escaped on the terminal
+_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u200b-\u200f\u202a-\u202e\u2066-\u2069\ufeff]")
+#: a "<" that would open an HTML tag, comment or declaration in a Markdown viewer
+_TAG_START = re.compile(r"<(?=[A-Za-z/!?])")
 _CODE = re.compile(r"`([^`]+)`")
 _CSS = """
 body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;margin:2em auto;
@@ -34,8 +39,28 @@ code{background:#f3f3f3;padding:0 .2em}.scroll{overflow-x:auto}
 """
 
 
+def _shown(text: str) -> str:
+    """``text`` with every control or format character written as its escape (``\\x1b``).
+
+    Manifest paths, labels and file names reach the report; an ESC or BEL in
+    one would drive the terminal of whoever ``cat``s report.md, as it would
+    have on the terminal where ``sdt`` prints the same text escaped.
+    """
+
+    def escape(match: re.Match[str]) -> str:
+        code = ord(match.group())
+        return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
+
+    return _CONTROL.sub(escape, text)
+
+
+def _md(text: str) -> str:
+    """Markdown text with controls escaped and tag openers neutralised (``<script>`` shown)."""
+    return _TAG_START.sub("&lt;", _shown(text))
+
+
 def _inline_html(text: str) -> str:
-    escaped = html.escape(text, quote=False)
+    escaped = html.escape(_shown(text), quote=False)
     escaped = _CODE.sub(r"<code>\1</code>", escaped)
     return _BOLD.sub(r"<strong>\1</strong>", escaped)
 
@@ -45,7 +70,7 @@ def _is_block_row(row: Sequence[str]) -> bool:
 
 
 def _md_cell(text: str) -> str:
-    return text.replace("|", "\\|").replace("\n", " ")
+    return _md(text).replace("|", "\\|").replace("\n", " ")
 
 
 def render_markdown(blocks: Sequence[Block], base: str | os.PathLike[str]) -> str:
@@ -53,22 +78,22 @@ def render_markdown(blocks: Sequence[Block], base: str | os.PathLike[str]) -> st
     out: list[str] = []
     for block in blocks:
         if isinstance(block, Heading):
-            out.append(f"{'#' * block.level} {block.text}")
+            out.append(f"{'#' * block.level} {_md(block.text)}")
         elif isinstance(block, Paragraph):
-            out.append(block.text)
+            out.append(_md(block.text))
         elif isinstance(block, Items):
-            out.append("\n".join(f"- {item}" for item in block.items))
+            out.append("\n".join(f"- {_md(item)}" for item in block.items))
         elif isinstance(block, Code):
-            out.append(f"```{block.lang}\n{block.text.rstrip()}\n```")
+            out.append(f"```{block.lang}\n{_shown(block.text.rstrip())}\n```")
         elif isinstance(block, Table):
             lines = ["| " + " | ".join(_md_cell(c) for c in block.header) + " |"]
             lines.append("|" + "---|" * len(block.header))
             lines += ["| " + " | ".join(_md_cell(c) for c in row) + " |" for row in block.rows]
-            out.append("\n".join(lines) + (f"\n\n{block.note}" if block.note else ""))
+            out.append("\n".join(lines) + (f"\n\n{_md(block.note)}" if block.note else ""))
         elif isinstance(block, Figure):
             rel = Path(os.path.relpath(block.path, base)).as_posix()
-            out.append(f"![{block.alt or block.caption}]({rel})\n\n*{block.caption}*")
-            out += list(block.extra)
+            out.append(f"![{_md(block.alt or block.caption)}]({rel})\n\n*{_md(block.caption)}*")
+            out += [_md(extra) for extra in block.extra]
     return "\n\n".join(out) + "\n"
 
 
@@ -99,12 +124,12 @@ def render_html(blocks: Sequence[Block], title: str) -> str:
             items = "".join(f"<li>{_inline_html(i)}</li>" for i in block.items)
             body.append(f"<ul>{items}</ul>")
         elif isinstance(block, Code):
-            body.append(f"<pre><code>{html.escape(block.text.rstrip())}</code></pre>")
+            body.append(f"<pre><code>{html.escape(_shown(block.text.rstrip()))}</code></pre>")
         elif isinstance(block, Table):
             body.append(_html_table(block))
         elif isinstance(block, Figure):
             data = base64.b64encode(Path(block.path).read_bytes()).decode("ascii")
-            alt = html.escape(block.alt or block.caption)
+            alt = html.escape(_shown(block.alt or block.caption))
             extra = "".join(f"<p>{_inline_html(e)}</p>" for e in block.extra)
             body.append(
                 f'<figure><img alt="{alt}" src="data:image/png;base64,{data}">'
@@ -113,7 +138,7 @@ def render_html(blocks: Sequence[Block], title: str) -> str:
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         '<meta name="viewport" content="width=device-width, initial-scale=1">'
-        f"<title>{html.escape(title)}</title><style>{_CSS}</style></head>\n<body>\n"
+        f"<title>{html.escape(_shown(title))}</title><style>{_CSS}</style></head>\n<body>\n"
         + "\n".join(body)
         + "\n</body></html>\n"
     )

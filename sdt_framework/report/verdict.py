@@ -18,7 +18,7 @@ from .document import Block, Figure, Heading, Items, Paragraph, Table
 from .load import ResultsFolder
 from .style import save_figure
 
-__all__ = ["CD_FIGURE", "verdict_blocks"]
+__all__ = ["CD_FIGURE", "missing_reference_note", "verdict_blocks"]
 
 CD_FIGURE = "cd_diagram.png"
 
@@ -28,12 +28,48 @@ def _intro(comparison: Comparison) -> Paragraph:
         f"Each sensor against the reference `{comparison.baseline}`, runs paired by machine, "
         f"scenario, classifier and repetition, at a margin of ±{comparison.margin:g} Macro F1. "
         "Δ is the sensor's Macro F1 minus the reference's, with its 95 % interval over "
-        "repetitions in brackets. **equivalent**: the 95 % intervals over repetitions and over "
-        "resampled test recordings both lie inside ±margin; **worse** / **better**: both lie "
-        "below −margin / above +margin; otherwise **inconclusive**, with the reason. "
-        "`sdt compare` prints the per-cell table and writes comparison.csv; the statistics are "
-        "explained in docs/report.md."
+        "repetitions in brackets and, where per-recording counts exist, its 95 % interval "
+        "over resampled test recordings (recording CI). **equivalent**: the 95 % intervals "
+        "over repetitions and over resampled test recordings both lie inside ±margin; "
+        "**worse** / **better**: both lie below −margin / above +margin; otherwise "
+        "**inconclusive**, with the reason. `sdt compare` prints the per-cell table and "
+        "writes comparison.csv; the statistics are explained in docs/report.md."
     )
+
+
+def missing_reference_note(folder: ResultsFolder) -> str | None:
+    """Why the sections measured against the reference are absent, and what to run; or None.
+
+    The verdict and the delta table compare every sensor with the reference; a
+    benchmark whose ``--sensors`` left the reference out (or whose reference
+    runs all failed) has nothing to compare with. The note says which, and
+    suggests commands that exist: the benchmark again with the reference added,
+    and ``sdt compare --baseline`` against a sensor the folder does hold.
+    """
+    reference = folder.reference
+    present = [s for s in folder.sensors if s in set(folder.ok["sensor"].dropna())]
+    if reference in present:
+        return None
+    holds = ", ".join(present) if present else "no successful run"
+    text = f"Not available: the reference {reference} "
+    if reference in set(folder.results["sensor"].dropna()):
+        text += (
+            f"has no successful run (every run of it failed), so nothing is compared with it "
+            f"(this folder holds {holds}); the failed runs' errors say why"
+        )
+    else:
+        sensors = ",".join([reference, *present])
+        text += (
+            f"was not among the benchmark's sensors, so nothing is compared with it (this "
+            f"folder holds {holds}). For this section, run the benchmark again with the "
+            f"reference in --sensors, e.g. `sdt benchmark --sensors {sensors} --out NEW_FOLDER`"
+        )
+    if len(present) >= 2:
+        text += (
+            f"; to compare the sensors here with one of them: "
+            f"`sdt compare {folder.path} --baseline {present[0]}`"
+        )
+    return text + "."
 
 
 def _group_table(comparison: Comparison) -> Table | None:
@@ -87,6 +123,9 @@ def verdict_blocks(
     so the rest of the report is still written.
     """
     blocks: list[Block] = [Heading("Verdict", 2)]
+    note = missing_reference_note(folder)
+    if note is not None:
+        return [*blocks, Paragraph(note)]
     try:
         comparison = compare(
             folder.results,

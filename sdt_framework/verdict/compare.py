@@ -24,7 +24,7 @@ from .aggregate import aggregate_rows, cell_rows
 from .equivalence import combine
 from .inputs import unpaired_runs
 from .paired import holm, paired_t_pvalue, t_interval, tost_pvalue
-from .ranking import Ranking, friedman_nemenyi
+from .ranking import DegenerateBlocksError, Ranking, friedman_nemenyi
 from .recordings import RecordingSets
 
 __all__ = ["CELL_KEYS", "Comparison", "compare", "stack_folders"]
@@ -211,6 +211,8 @@ def compare(
     ranking, note = None, ""
     try:
         ranking = friedman_nemenyi(blocks, alpha)
+    except DegenerateBlocksError as exc:
+        note = f"not computed: {str(exc).replace('treatments', treatment + 's')}"
     except ValueError:
         note = (
             f"not computed: Friedman needs at least 3 {treatment}s and 2 complete blocks "

@@ -25,7 +25,11 @@ import numpy as np
 import pandas as pd
 from scipy import stats
 
-__all__ = ["Ranking", "critical_difference", "friedman_nemenyi", "q_alpha"]
+__all__ = ["DegenerateBlocksError", "Ranking", "critical_difference", "friedman_nemenyi", "q_alpha"]
+
+
+class DegenerateBlocksError(ValueError):
+    """Blocks the Friedman statistic is not defined on: every block ties every treatment."""
 
 
 def q_alpha(k: int, alpha: float = 0.05) -> float:
@@ -84,6 +88,9 @@ def friedman_nemenyi(scores: pd.DataFrame, alpha: float = 0.05) -> Ranking:
     ------
     ValueError
         Fewer than 3 treatments or 2 complete blocks (the test is not defined).
+    DegenerateBlocksError
+        Every block gives all treatments the same score: the tie-corrected
+        statistic is 0/0 (scipy would warn and return NaN), nothing ranks.
     """
     import scikit_posthocs as sp
 
@@ -91,7 +98,13 @@ def friedman_nemenyi(scores: pd.DataFrame, alpha: float = 0.05) -> Ranking:
     n, k = scores.shape
     if k < 3 or n < 2:
         raise ValueError(f"Friedman needs >= 3 treatments and >= 2 blocks, got {k} and {n}")
-    ranks = stats.rankdata(-scores.to_numpy(float), axis=1)
+    values = scores.to_numpy(float)
+    if np.all(values == values[:, :1]):
+        raise DegenerateBlocksError(
+            f"every one of the {n} blocks gives all {k} treatments the same Macro F1 "
+            f"(e.g. {values[0, 0]:.3f}), so there is nothing to rank"
+        )
+    ranks = stats.rankdata(-values, axis=1)
     average = pd.Series(ranks.mean(axis=0), index=scores.columns).sort_values(kind="stable")
     test = stats.friedmanchisquare(*scores.to_numpy(float).T)
     chi2 = 12 * n / (k * (k + 1)) * (float(np.sum(average**2)) - k * (k + 1) ** 2 / 4)

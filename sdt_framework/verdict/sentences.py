@@ -29,11 +29,19 @@ class Finding:
 
 
 def fmt_delta(row: pd.Series | object) -> str:
-    """``Δ -0.045 [-0.050, -0.040]``: the mean difference and its repetition interval."""
+    """``Δ -0.045 [-0.050, -0.040]; recording CI [-0.070, -0.018]``: Δ and both its intervals.
+
+    A label other than inconclusive needs both intervals to agree
+    (:func:`.equivalence.combine`), so both are printed wherever a label is:
+    the repetition interval alone can lie wholly beyond the margin beside an
+    "inconclusive" that the recording interval decided.
+    """
     delta, low, high = (getattr(row, k) for k in ("delta", "ci_low", "ci_high"))
+    rec_low, rec_high = (getattr(row, k, np.nan) for k in ("rec_ci_low", "rec_ci_high"))
+    rec = "" if np.isnan(rec_low) else f"; recording CI [{rec_low:+.3f}, {rec_high:+.3f}]"
     if np.isnan(low):
-        return f"Δ {delta:+.3f}, no interval"
-    return f"Δ {delta:+.3f} [{low:+.3f}, {high:+.3f}]"
+        return f"Δ {delta:+.3f}, no interval{rec}"
+    return f"Δ {delta:+.3f} [{low:+.3f}, {high:+.3f}]{rec}"
 
 
 def _short(reason: str) -> str:
@@ -110,13 +118,10 @@ def _overall_finding(comparison: Comparison, row: object) -> Finding:
     ]
     counts = cells["label"].value_counts()
     tally = ", ".join(f"{int(counts[k])} {k}" for k in counts.index)
-    rec = ""
-    if not np.isnan(row.rec_ci_low):
-        rec = f"; recording CI [{row.rec_ci_low:+.3f}, {row.rec_ci_high:+.3f}]"
     return Finding(
         f"overall, {row.candidate}",
         f"{row.candidate} vs {comparison.baseline} over {int(row.n_cells)} cells: {row.label} "
-        f"({fmt_delta(row)}{rec}; mean Macro F1 {row.candidate_mean:.3f} vs "
+        f"({fmt_delta(row)}; mean Macro F1 {row.candidate_mean:.3f} vs "
         f"{row.baseline_mean:.3f}); cells: {tally}.",
     )
 

@@ -12,7 +12,7 @@ def test_readme_plugin_example_runs(capsys):
     text = README.read_text()
     match = re.search(r"<!-- readme-plugin-example -->\n```python\n(.*?)```", text, re.S)
     assert match, "README lost its plugin example marker"
-    exec(compile(match.group(1), "README.md", "exec"), {"__name__": "readme_example"})
+    exec(compile(match.group(1), "README.md", "exec"), {"__name__": "__main__"})
     printed = capsys.readouterr().out
     assert printed.strip() == "0.00390625 {'max_depth': 6}"  # 2 * 8 g / 2**12
 

@@ -170,4 +170,7 @@ def test_verdict_section_says_why_when_the_reference_is_missing(results_dir, tmp
     results[results["sensor"] != "wilcoxon-786b10"].to_parquet(results_dir / "results.parquet")
     blocks = verdict_blocks(load_results(results_dir), {}, tmp_path)
     assert isinstance(blocks[1], Paragraph)
-    assert blocks[1].text.startswith("Not available: baseline 'wilcoxon-786b10' has no")
+    assert blocks[1].text.startswith(
+        "Not available: the reference wilcoxon-786b10 was not among the benchmark's sensors"
+    )
+    assert "choose --baseline" not in blocks[1].text  # an option only `sdt compare` has

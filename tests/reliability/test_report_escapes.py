@@ -1,0 +1,49 @@
+"""Text a user or a stranger's file chose reaches report.md and report.html inert.
+
+A manifest path holding ESC/BEL (``ESC ] 0 ; title BEL`` sets a terminal's
+title; ``ESC [ 2 J`` clears it) reached both files raw, and a ``<script>`` tag
+reached report.md raw (a Markdown viewer renders HTML). The terminal already
+showed such text escaped; the files now do the same: controls as ``\\x1b``,
+``<script>`` as ``&lt;script>`` in Markdown and ``&lt;script&gt;`` in HTML.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pandas as pd
+
+HOSTILE = "runs/\x1b]0;pwned\x07evil\x1b[2J<script>alert(1)</script>.csv"
+
+
+def test_control_bytes_and_tags_are_escaped_in_both_files(tmp_path):
+    root = tmp_path / "res"
+    root.mkdir()
+    runs = [
+        {"dataset": "d", "feature_set": "paper8", "machine": "M", "scenario": "forward",
+         "sensor": s, "classifier": "lr", "repeat": r,
+         "macro_f1": 0.5 + 0.01 * r, "status": "ok", "error": None}
+        for s in ("wilcoxon-786b10", "adxl345") for r in range(2)
+    ]  # fmt: skip
+    pd.DataFrame(runs).to_parquet(root / "results.parquet")
+    skipped = {"dataset_skipped": [{"path": HOSTILE, "reason": "no such file <b>bold</b>"}]}
+    (root / "summary.json").write_text(json.dumps(skipped), encoding="utf-8")
+    pd.DataFrame([{"what": HOSTILE, "why": "unreadable"}]).to_csv(root / "skipped.csv", index=False)
+    run = subprocess.run(
+        [sys.executable, "-m", "sdt_framework", "report", str(root)],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert run.returncode == 0, run.stderr
+    md = (root / "report.md").read_text(encoding="utf-8")
+    page = (root / "report.html").read_text(encoding="utf-8")
+    for text in (md, page):
+        assert "\x1b" not in text and "\x07" not in text
+        assert text.count("runs/\\x1b]0;pwned\\x07evil\\x1b[2J") == 2  # both places, escaped
+        assert "<script>" not in text and "<b>bold</b>" not in text
+    assert "&lt;script>alert(1)&lt;/script>" in md
+    assert "&lt;script&gt;alert(1)&lt;/script&gt;" in page
+    assert "\x1b" not in run.stdout + run.stderr
