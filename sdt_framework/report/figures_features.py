@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
-from .style import new_figure
+from .style import figure_label, new_figure
 
 __all__ = ["FEATURE_META", "feature_columns", "lowest_severity", "plot_tsne"]
 
@@ -108,7 +108,7 @@ def plot_tsne(
                 xy[mask, 1],
                 s=9,
                 color=cmap[k],
-                label=label,
+                label=figure_label(label),
                 alpha=0.8,
                 edgecolors="none",
             )

@@ -11,7 +11,7 @@ import pandas as pd
 from matplotlib.figure import Figure
 
 from ..bench.results import SCENARIO_TITLES
-from .style import new_figure
+from .style import figure_label, new_figure
 
 __all__ = ["best_class_f1", "plot_confusions", "plot_radar", "worst_cells"]
 
@@ -54,9 +54,11 @@ def plot_radar(per_class: pd.DataFrame, sensors: list[str], colors: dict[str, st
             for sensor in [s for s in sensors if s in set(part["sensor"])]:
                 f1 = part[part["sensor"] == sensor].set_index("class")["f1"].reindex(classes)
                 values = np.append(f1.to_numpy(), f1.to_numpy()[0])
-                ax.plot(closed, values, color=colors.get(sensor), lw=1.6, label=sensor)
+                label = figure_label(sensor)
+                ax.plot(closed, values, color=colors.get(sensor), lw=1.6, label=label)
                 ax.fill(closed, values, color=colors.get(sensor), alpha=0.08)
-            ax.set_xticks(angles, [c.replace(" ", "\n", 1) for c in classes], fontsize=7)
+            names = [figure_label(c).replace(" ", "\n", 1) for c in classes]
+            ax.set_xticks(angles, names, fontsize=7)
             ax.set_ylim(0, 1)
             ax.set_yticks([0.25, 0.5, 0.75, 1.0], ["0.25", "0.5", "0.75", "1"], fontsize=6)
             ax.set_title(f"{machine} — {SCENARIO_TITLES[scenario]}", fontsize=9, pad=14)
@@ -120,8 +122,9 @@ def plot_confusions(confusion: pd.DataFrame, cells: pd.DataFrame) -> Figure:
                     color="white" if value > 0.6 else "black",
                 )
         ticks = range(len(classes))
-        ax.set_xticks(ticks, classes, rotation=45, ha="right", fontsize=7)
-        ax.set_yticks(ticks, classes, fontsize=7)
+        names = [figure_label(c) for c in classes]
+        ax.set_xticks(ticks, names, rotation=45, ha="right", fontsize=7)
+        ax.set_yticks(ticks, names, fontsize=7)
         ax.set(xlabel="predicted class", ylabel="true class")
         score = f", macro F1 {cell['macro_f1']:.3f}" if "macro_f1" in cell else ""
         ax.set_title(

@@ -17,7 +17,7 @@ from scipy import signal
 from ..validation import NoiseCheck
 from ..validation.noise_plot import draw_noise
 from .signals import SensorTrace
-from .style import LINESTYLES, new_figure
+from .style import LINESTYLES, figure_label, new_figure
 
 __all__ = ["plot_noise", "plot_sdt_overlay"]
 
@@ -60,7 +60,7 @@ def plot_sdt_overlay(
         shown = (t >= start) & (t <= start + span_s)
         color = colors.get(trace.sensor)
         style = LINESTYLES[i % len(LINESTYLES)]
-        label = trace.sensor + (" (clipped)" if trace.clipped else "")
+        label = figure_label(trace.sensor) + (" (clipped)" if trace.clipped else "")
         ax_t.plot(
             (t[shown] - start) * 1e3,
             trace.signal[shown],
@@ -83,7 +83,12 @@ def plot_sdt_overlay(
             )
         freqs, asd = _asd(trace.signal, trace.fs)
         ax_f.loglog(
-            freqs, asd, color=color, ls=style, lw=1.0, label=f"{trace.sensor} ({trace.fs:g} Hz)"
+            freqs,
+            asd,
+            color=color,
+            ls=style,
+            lw=1.0,
+            label=f"{figure_label(trace.sensor)} ({trace.fs:g} Hz)",
         )
     ax_t.set(
         xlabel=f"time from {start * 1e3:.0f} ms, ms",

@@ -19,13 +19,37 @@ from matplotlib.figure import Figure
 
 from ..io import atomic_path
 
-__all__ = ["DPI", "REFERENCE_COLOR", "new_figure", "save_figure", "sensor_colors"]
+__all__ = [
+    "DPI",
+    "LABEL_LIMIT",
+    "REFERENCE_COLOR",
+    "figure_label",
+    "new_figure",
+    "save_figure",
+    "sensor_colors",
+]
 
 DPI = 110
 REFERENCE_COLOR = "0.45"
 #: colours for the non-reference sensors, in order (red first, as the paper's ADXL345)
 _CYCLE = ("#d62728", "#2ca02c", "#1f77b4", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf")
 LINESTYLES = ("-", "--", "-.", ":")
+#: longest label (class, sensor) drawn in a figure; the tables and files keep the whole name
+LABEL_LIMIT = 40
+
+
+def figure_label(text: object, limit: int = LABEL_LIMIT) -> str:
+    """``text`` cut in the middle to at most ``limit`` characters for a tick or legend.
+
+    A label is data (a manifest's condition, a sweep point's name): a
+    100 000-character one drawn whole costs matplotlib minutes and fills the
+    figure; the report's tables and the result files keep it whole.
+    """
+    text = str(text)
+    if len(text) <= limit:
+        return text
+    half = (limit - 1) // 2
+    return f"{text[:half]}…{text[-half:]}"
 
 
 def sensor_colors(sensors: Sequence[str], reference: str | None) -> dict[str, str]:
