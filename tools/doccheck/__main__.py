@@ -1,0 +1,56 @@
+"""``python -m tools.doccheck [--mode fast|slow|all] [DOC ...]``: run, report, sum up.
+
+Prints one line per command (PASS, FAIL with the reason and what was printed,
+SKIP with the reason), the skipped list, and last ``N passed, N failed, ...``;
+exits 1 when a command failed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import tempfile
+import time
+from collections import Counter
+from pathlib import Path
+
+from .extract import ROOT, all_steps
+from .runner import run_doc
+
+LABEL = {"passed": "PASS", "failed": "FAIL", "skipped": "SKIP", "xfailed": "XFAIL"}
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the selected documents' commands and print a pytest-like summary line."""
+    parser = argparse.ArgumentParser(prog="python -m tools.doccheck")
+    parser.add_argument("--mode", choices=["fast", "slow", "all"], default="slow")
+    parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
+    args = parser.parse_args(argv)
+    cache = Path(os.environ.get("SDT_CACHE_DIR") or tempfile.mkdtemp(prefix="doccheck-cache-"))
+    selected = {d: s for d, s in all_steps().items() if not args.docs or d in args.docs}
+    modes = ["fast", "slow"] if args.mode == "all" else [args.mode]
+    counts: Counter[str] = Counter()
+    skipped: list[str] = []
+    start = time.monotonic()
+    for doc, steps in selected.items():
+        for mode in modes:
+            for result in run_doc(steps, mode, cache, ROOT):
+                counts[result.status] += 1
+                label = LABEL.get(result.status, result.status.upper())
+                head = f"{label:5} {result.command.id} ({result.seconds:.1f} s) $ "
+                print(head + result.command.text, flush=True)
+                if result.status == "skipped":
+                    skipped.append(f"  {result.command.id}: {result.detail}")
+                elif result.status in {"failed", "xfailed"}:
+                    print("      " + result.detail.replace("\n", "\n      "), flush=True)
+    if skipped:
+        print("skipped (cannot run here):\n" + "\n".join(skipped))
+    order = ["passed", "failed", "skipped", "xfailed", "xpassed"]
+    summary = ", ".join(f"{counts[k]} {k}" for k in order if counts[k] or k in order[:2])
+    print(f"{summary} in {time.monotonic() - start:.0f} s (documented commands)")
+    return 1 if counts["failed"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
