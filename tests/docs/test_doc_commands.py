@@ -15,8 +15,8 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
-from tools.doccheck.extract import Command, all_steps  # noqa: E402
-from tools.doccheck.runner import Result, run_doc  # noqa: E402
+from tools.doccheck.extract import Command, all_steps
+from tools.doccheck.runner import Result, run_doc
 
 STEPS = all_steps()
 FAST = [

@@ -21,10 +21,18 @@ from .runner import run_doc
 LABEL = {"passed": "PASS", "failed": "FAIL", "skipped": "SKIP", "xfailed": "XFAIL"}
 
 
+def dump(folder: Path, where: str, command: str, printed: str) -> None:
+    """Save what a command printed, as a document would show it, to paste when it moved."""
+    folder.mkdir(parents=True, exist_ok=True)
+    name = where.replace("/", "_").replace(":", "_") + ".txt"
+    (folder / name).write_text(f"$ {command}\n{printed}", encoding="utf-8")
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the selected documents' commands and print a pytest-like summary line."""
     parser = argparse.ArgumentParser(prog="python -m tools.doccheck")
     parser.add_argument("--mode", choices=["fast", "slow", "all"], default="slow")
+    parser.add_argument("--dump", type=Path, help="write each command's printed output here")
     parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
     args = parser.parse_args(argv)
     cache = Path(os.environ.get("SDT_CACHE_DIR") or tempfile.mkdtemp(prefix="doccheck-cache-"))
@@ -33,10 +41,12 @@ def main(argv: list[str] | None = None) -> int:
     counts: Counter[str] = Counter()
     skipped: list[str] = []
     start = time.monotonic()
-    for doc, steps in selected.items():
+    for steps in selected.values():
         for mode in modes:
             for result in run_doc(steps, mode, cache, ROOT):
                 counts[result.status] += 1
+                if args.dump and result.status != "skipped":
+                    dump(args.dump, result.command.id, result.command.text, result.printed)
                 label = LABEL.get(result.status, result.status.upper())
                 head = f"{label:5} {result.command.id} ({result.seconds:.1f} s) $ "
                 print(head + result.command.text, flush=True)

@@ -29,6 +29,7 @@ class Result:
     status: str
     detail: str = ""
     seconds: float = 0.0
+    printed: str = ""
 
 
 def has_slow(steps: list[Command | FileStep]) -> bool:
@@ -55,8 +56,9 @@ def judge(command: Command, sandbox: Sandbox, timeout: float) -> Result:
     detail = "\n".join(found) + ("\n  printed:\n" + _indent(printed) if found else "")
     if "xfail" in command.notes:
         verdict = "xfailed" if found else "xpassed"
-        return Result(command, verdict, command.notes.get("reason", "") + "\n" + detail, seconds)
-    return Result(command, "failed" if found else "passed", detail, seconds)
+        reason = command.notes.get("reason", "") + "\n" + detail
+        return Result(command, verdict, reason, seconds, printed)
+    return Result(command, "failed" if found else "passed", detail, seconds, printed)
 
 
 def _indent(text: str, limit: int = 60) -> str:
