@@ -54,11 +54,16 @@ class Sandbox:
         return env
 
     def run(self, command: str, columns: int, timeout: float) -> tuple[int, str, float]:
-        """Exit status, what the terminal would show (stdout and stderr) and seconds."""
+        """Exit status, what the terminal would show (stdout and stderr) and seconds.
+
+        The status is the shell's ``$?``, of a pipeline's last command as a user
+        sees it (``sdt ... | head -3`` is not failed by the pipe closing early);
+        a crash before the pipe still shows as a traceback or missing lines.
+        """
         command = TMP.sub(f"{self.root}/tmp/", command)
         start = time.monotonic()
         process = subprocess.Popen(
-            ["bash", "-o", "pipefail", "-c", command],
+            ["bash", "-c", command],
             cwd=self.root,
             env=self.environment(columns),
             stdout=subprocess.PIPE,
