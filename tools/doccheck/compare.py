@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-NUMBER = re.compile(r"(?<![A-Za-z_])[-+−]?\d[\d,]*(?:\.\d+)?(?:[eE][-+]?\d+)?")
+NUMBER = re.compile(r"(?<![A-Za-z_\d.])[-+−]?\d[\d,]*(?:\.\d+)?(?:[eE][-+]?\d+)?")
 BOXES = re.compile(r"[\u2500-\u257f|]+")
 SPACES = re.compile(r"\s+")
 PROGRESS = re.compile(r"━+\s+\d+/\d+")
