@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import signal
 import sys
 import tempfile
 import time
@@ -35,6 +36,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--dump", type=Path, help="write each command's printed output here")
     parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
     args = parser.parse_args(argv)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # runs the sandboxes' clean-up
     cache = Path(os.environ.get("SDT_CACHE_DIR") or tempfile.mkdtemp(prefix="doccheck-cache-"))
     selected = {d: s for d, s in all_steps().items() if not args.docs or d in args.docs}
     modes = ["fast", "slow"] if args.mode == "all" else [args.mode]

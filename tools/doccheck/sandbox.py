@@ -77,6 +77,9 @@ class Sandbox:
             os.killpg(process.pid, signal.SIGKILL)  # the command's workers too
             raw, _ = process.communicate()
             status, raw = -1, raw + f"\n(stopped after {timeout:.0f} s)".encode()
+        finally:  # the checker stopped (Ctrl-C, SIGTERM): stop the command it started
+            if process.poll() is None:
+                os.killpg(process.pid, signal.SIGKILL)
         printed = raw.decode("utf-8", "replace")
         printed = printed.replace(f"{self.root}/tmp/", "/tmp/").replace(f"{self.root}/", "")
         return status, printed, time.monotonic() - start
