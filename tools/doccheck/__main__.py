@@ -42,7 +42,7 @@ def main(argv: list[str] | None = None) -> int:
     modes = ["fast", "slow"] if args.mode == "all" else [args.mode]
     counts: Counter[str] = Counter()
     skipped: list[str] = []
-    start = time.monotonic()
+    start, cpu = time.monotonic(), 0.0
     for steps in selected.values():
         for mode in modes:
             for result in run_doc(steps, mode, cache, ROOT):
@@ -50,7 +50,9 @@ def main(argv: list[str] | None = None) -> int:
                 if args.dump and result.status != "skipped":
                     dump(args.dump, result.command.id, result.command.text, result.printed)
                 label = LABEL.get(result.status, result.status.upper())
-                head = f"{label:5} {result.command.id} ({result.seconds:.1f} s) $ "
+                cpu += result.cpu
+                times = f"{result.seconds:.1f} s, CPU {result.cpu:.1f} s"
+                head = f"{label:5} {result.command.id} ({times}) $ "
                 print(head + result.command.text, flush=True)
                 if result.status == "skipped":
                     skipped.append(f"  {result.command.id}: {result.detail}")
@@ -60,7 +62,8 @@ def main(argv: list[str] | None = None) -> int:
         print("skipped (cannot run here):\n" + "\n".join(skipped))
     order = ["passed", "failed", "skipped", "xfailed", "xpassed"]
     summary = ", ".join(f"{counts[k]} {k}" for k in order if counts[k] or k in order[:2])
-    print(f"{summary} in {time.monotonic() - start:.0f} s (documented commands)")
+    took = f"{time.monotonic() - start:.0f} s, CPU {cpu:.0f} s"
+    print(f"{summary} in {took} (documented commands)")
     return 1 if counts["failed"] else 0
 
 

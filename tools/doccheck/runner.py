@@ -30,6 +30,7 @@ class Result:
     detail: str = ""
     seconds: float = 0.0
     printed: str = ""
+    cpu: float = 0.0
 
 
 def has_slow(steps: list[Command | FileStep]) -> bool:
@@ -51,14 +52,14 @@ def judge(command: Command, sandbox: Sandbox, timeout: float) -> Result:
         if not (sandbox.root / name).exists():
             sandbox.write(name, "\n".join(command.output) + "\n")
     expected = expectation(command.text, command.output)
-    status, printed, seconds = sandbox.run(expected.command, columns(command), timeout)
+    status, printed, seconds, cpu = sandbox.run(expected.command, columns(command), timeout)
     found = problems(expected, status, printed)
     detail = "\n".join(found) + ("\n  printed:\n" + _indent(printed) if found else "")
     if "xfail" in command.notes:
         verdict = "xfailed" if found else "xpassed"
         reason = command.notes.get("reason", "") + "\n" + detail
-        return Result(command, verdict, reason, seconds, printed)
-    return Result(command, "failed" if found else "passed", detail, seconds, printed)
+        return Result(command, verdict, reason, seconds, printed, cpu)
+    return Result(command, "failed" if found else "passed", detail, seconds, printed, cpu)
 
 
 def _indent(text: str, limit: int = 60) -> str:

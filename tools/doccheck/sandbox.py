@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import os
 import re
+import resource
 import signal
 import subprocess
 import sys
@@ -53,15 +54,18 @@ class Sandbox:
         env.update(COLUMNS=str(columns), NO_COLOR="1", TERM="dumb")
         return env
 
-    def run(self, command: str, columns: int, timeout: float) -> tuple[int, str, float]:
-        """Exit status, what the terminal would show (stdout and stderr) and seconds.
+    def run(self, command: str, columns: int, timeout: float) -> tuple[int, str, float, float]:
+        """Exit status, what the terminal shows (stdout and stderr), wall and CPU seconds.
+
+        CPU seconds (the command and its workers) do not depend on the machine's
+        load as wall seconds do, so they size the test suite's share.
 
         The status is the shell's ``$?``, of a pipeline's last command as a user
         sees it (``sdt ... | head -3`` is not failed by the pipe closing early);
         a crash before the pipe still shows as a traceback or missing lines.
         """
         command = TMP.sub(f"{self.root}/tmp/", command)
-        start = time.monotonic()
+        start, cpu = time.monotonic(), _children_cpu()
         process = subprocess.Popen(
             ["bash", "-c", command],
             cwd=self.root,
@@ -82,4 +86,10 @@ class Sandbox:
                 os.killpg(process.pid, signal.SIGKILL)
         printed = raw.decode("utf-8", "replace")
         printed = printed.replace(f"{self.root}/tmp/", "/tmp/").replace(f"{self.root}/", "")
-        return status, printed, time.monotonic() - start
+        return status, printed, time.monotonic() - start, _children_cpu() - cpu
+
+
+def _children_cpu() -> float:
+    """User and system seconds of this process's finished children so far."""
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return used.ru_utime + used.ru_stime
