@@ -9,6 +9,7 @@ their reason, never run.
 
 from __future__ import annotations
 
+import re
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -17,6 +18,7 @@ from .compare import expectation, problems
 from .extract import ROOT, Command, FileStep
 from .sandbox import Sandbox
 
+BOX = re.compile(r"[\u2500-\u257f]")
 FAST_TIMEOUT_S = 300.0
 SLOW_TIMEOUT_S = 1800.0
 
@@ -39,10 +41,15 @@ def has_slow(steps: list[Command | FileStep]) -> bool:
 
 
 def columns(command: Command) -> int:
-    """Terminal width: the block's ``columns=N``, else the widest shown line (80 at least)."""
+    """Terminal width: the block's ``columns=N``, else the widest shown table (80 at least).
+
+    A table narrower than the terminal prints the same at any width, and one
+    wider is squeezed to exactly the width, so the widest table line shown is
+    the width it was made at; plain lines (notes) are printed unwrapped.
+    """
     if command.notes.get("columns"):
         return int(command.notes["columns"])
-    return max([80, *(len(line) for line in command.output)])
+    return max([80, *(len(line) for line in command.output if BOX.search(line))])
 
 
 def judge(command: Command, sandbox: Sandbox, timeout: float) -> Result:
