@@ -23,6 +23,8 @@ def test_numbers_and_column_widths_are_noise():
     assert normalise("│ adxl345 │ 0.3663 │") == normalise("│ adxl345   │  0.41 │")
     assert normalise("900 runs in 83 s") == normalise("900 runs in 1234 s")
     assert normalise("Δ -0.044 [-0.046, -0.041]") == "Δ # [#, #]"
+    assert normalise("real\t0m6.0s") == normalise("real\t1m6.629s")
+    assert normalise("adxl345 ch1 SF12/125") == "adxl345 ch1 SF12/#"
 
 
 def test_a_rerun_with_other_figures_passes():

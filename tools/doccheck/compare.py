@@ -13,7 +13,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
-NUMBER = re.compile(r"(?<![A-Za-z_\d.])[-+−]?\d[\d,]*(?:\.\d+)?(?:[eE][-+]?\d+)?")
+# a number, unless it ends a name (adxl345, ch1, SF12: two letters before it)
+NUMBER = re.compile(r"(?<![A-Za-z_][A-Za-z_])(?<![\d.])[-+−]?\d[\d,]*(?:\.\d+)?(?:[eE][-+]?\d+)?")
 BOXES = re.compile(r"[\u2500-\u257f|]+")
 SPACES = re.compile(r"\s+")
 PROGRESS = re.compile(r"━+\s+\d+/\d+")
