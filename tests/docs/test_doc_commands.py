@@ -9,6 +9,7 @@ annotated ``skip`` name why they cannot run here and are listed there.
 from __future__ import annotations
 
 import sys
+from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -28,19 +29,25 @@ FAST = [
 
 
 @pytest.fixture(scope="session")
-def verdicts(tmp_path_factory) -> dict[str, dict[str, Result]]:
-    """Lazily run each document's fast commands once; keyed by document, then command id."""
+def verdicts(request, tmp_path_factory) -> dict[str, Future]:
+    """Each selected document's fast commands, run once, two documents at a time.
+
+    Documents are independent (one sandbox each), so on the 2-core machine two
+    run side by side; each test waits for its own document's verdicts.
+    """
     cache = tmp_path_factory.mktemp("doccheck-cache")
-    done: dict[str, dict[str, Result]] = {}
+    docs = {
+        item.callspec.params["command"].doc
+        for item in request.session.items
+        if getattr(item, "callspec", None) and "command" in item.callspec.params
+    }
+    pool = ThreadPoolExecutor(max_workers=2)
+    request.addfinalizer(pool.shutdown)
 
-    class Lazy(dict):
-        def __missing__(self, doc: str) -> dict[str, Result]:
-            results = {r.command.id: r for r in run_doc(STEPS[doc], "fast", cache)}
-            done[doc] = results
-            self[doc] = results
-            return results
+    def run(doc: str) -> dict[str, Result]:
+        return {r.command.id: r for r in run_doc(STEPS[doc], "fast", cache)}
 
-    return Lazy()
+    return {doc: pool.submit(run, doc) for doc in sorted(docs)}
 
 
 def test_documents_hold_commands():
@@ -51,7 +58,7 @@ def test_documents_hold_commands():
 
 @pytest.mark.parametrize("command", FAST, ids=lambda c: f"{c.id} {c.text[:60]}")
 def test_documented_command(command: Command, verdicts):
-    result = verdicts[command.doc][command.id]
+    result = verdicts[command.doc].result()[command.id]
     if result.status == "xfailed":
         pytest.xfail(command.notes.get("reason", ""))
     assert result.status in {"passed", "xpassed"}, f"$ {command.text}\n{result.detail}"
