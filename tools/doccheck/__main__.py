@@ -37,27 +37,31 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
     args = parser.parse_args(argv)
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # runs the sandboxes' clean-up
-    cache = Path(os.environ.get("SDT_CACHE_DIR") or tempfile.mkdtemp(prefix="doccheck-cache-"))
+    with tempfile.TemporaryDirectory(prefix="doccheck-cache-") as folder:
+        cache = Path(os.environ.get("SDT_CACHE_DIR") or folder)  # one cache for every document
+        return check(args, cache)
+
+
+def check(args: argparse.Namespace, cache: Path) -> int:
+    """Run the selected documents in ``args`` with the shared ``cache``; 1 if one failed."""
     selected = {d: s for d, s in all_steps().items() if not args.docs or d in args.docs}
-    modes = ["fast", "slow"] if args.mode == "all" else [args.mode]
     counts: Counter[str] = Counter()
     skipped: list[str] = []
     start, cpu = time.monotonic(), 0.0
     for steps in selected.values():
-        for mode in modes:
-            for result in run_doc(steps, mode, cache, ROOT):
-                counts[result.status] += 1
-                if args.dump and result.status != "skipped":
-                    dump(args.dump, result.command.id, result.command.text, result.printed)
-                label = LABEL.get(result.status, result.status.upper())
-                cpu += result.cpu
-                times = f"{result.seconds:.1f} s, CPU {result.cpu:.1f} s"
-                head = f"{label:5} {result.command.id} ({times}) $ "
-                print(head + result.command.text, flush=True)
-                if result.status == "skipped":
-                    skipped.append(f"  {result.command.id}: {result.detail}")
-                elif result.status in {"failed", "xfailed"}:
-                    print("      " + result.detail.replace("\n", "\n      "), flush=True)
+        for result in run_doc(steps, args.mode, cache, ROOT):
+            counts[result.status] += 1
+            if args.dump and result.status != "skipped":
+                dump(args.dump, result.command.id, result.command.text, result.printed)
+            label = LABEL.get(result.status, result.status.upper())
+            cpu += result.cpu
+            times = f"{result.seconds:.1f} s, CPU {result.cpu:.1f} s"
+            head = f"{label:5} {result.command.id} ({times}) $ "
+            print(head + result.command.text, flush=True)
+            if result.status == "skipped":
+                skipped.append(f"  {result.command.id}: {result.detail}")
+            elif result.status in {"failed", "xfailed"}:
+                print("      " + result.detail.replace("\n", "\n      "), flush=True)
     if skipped:
         print("skipped (cannot run here):\n" + "\n".join(skipped))
     order = ["passed", "failed", "skipped", "xfailed", "xpassed"]

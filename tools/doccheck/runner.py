@@ -3,8 +3,8 @@
 Blocks run in reading order so a command finds the files an earlier one wrote.
 ``fast`` runs the blocks not annotated ``slow`` (the test suite's share);
 ``slow`` runs every block of a document that has a slow one (the ``make
-doccheck`` share: earlier blocks are its set-up). Skipped blocks are listed with
-their reason, never run.
+doccheck`` share: earlier blocks are its set-up); ``all`` runs every block.
+Skipped blocks are listed with their reason, never run.
 """
 
 from __future__ import annotations
@@ -76,7 +76,7 @@ def _indent(text: str, limit: int = 60) -> str:
 
 
 def run_doc(steps: list[Command | FileStep], mode: str, cache: Path, root: Path = ROOT):
-    """Yield a Result per command of one document (``mode`` fast or slow), in order."""
+    """Yield a Result per command of one document (``mode`` fast, slow or all), in order."""
     if mode == "slow" and not has_slow(steps):
         return
     timeout = SLOW_TIMEOUT_S if mode == "slow" else FAST_TIMEOUT_S
