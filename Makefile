@@ -6,7 +6,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: run test lint bench clean browser
+.PHONY: run test doccheck lint bench clean browser
 
 $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
@@ -22,6 +22,10 @@ run: $(STAMP)
 
 test: $(STAMP) browser
 	$(BIN)/python -m pytest -q
+
+# the slow documented commands (full benchmarks, sweeps, calibrations) of README.md and docs/*.md
+doccheck: $(STAMP)
+	$(BIN)/python -m tools.doccheck --mode slow
 
 # best effort, CI only: headless Chromium for the report's browser test (skipped without it)
 browser:

@@ -1,0 +1,70 @@
+"""The documented-command checker judges outputs as intended: noise passes, changes do not."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+
+from tools.doccheck.compare import expectation, normalise, problems
+from tools.doccheck.extract import FileStep, steps
+
+TABLE = (
+    "┏━━━━━━━━━┳━━━━━━━━┓",
+    "┃ sensor  ┃     LR ┃",
+    "┡━━━━━━━━━╇━━━━━━━━┩",
+    "│ adxl345 │ 0.3663 │",
+    "└─────────┴────────┘",
+)
+
+
+def test_numbers_and_column_widths_are_noise():
+    assert normalise("│ adxl345 │ 0.3663 │") == normalise("│ adxl345   │  0.41 │")
+    assert normalise("900 runs in 83 s") == normalise("900 runs in 1234 s")
+    assert normalise("Δ -0.044 [-0.046, -0.041]") == "Δ # [#, #]"
+    assert normalise("real\t0m6.0s") == normalise("real\t1m6.629s")
+    assert normalise("adxl345 ch1 SF12/125") == "adxl345 ch1 SF12/#"
+
+
+def test_a_rerun_with_other_figures_passes():
+    expected = expectation("sdt x", TABLE)
+    rerun = "\n".join(line.replace("0.3663", "0.40") for line in TABLE)
+    assert problems(expected, 0, rerun) == []
+
+
+def test_a_lost_row_a_changed_word_a_traceback_or_status_fail():
+    expected = expectation("sdt x", TABLE)
+    assert problems(expected, 0, "\n".join(TABLE[:3] + TABLE[4:]))  # row lost
+    assert problems(expected, 0, "\n".join(TABLE).replace("adxl345", "adxl357"))
+    assert problems(expected, 0, "\n".join(TABLE) + "\nTraceback (most recent call last):")
+    assert problems(expected, 1, "\n".join(TABLE))
+
+
+def test_documented_status_is_read_from_echo_or_an_error_line():
+    shown = ("error: sensor 'adxl345': target rate above the recording's", "exit 2")
+    expected = expectation('sdt degrade p.npy --fs 2000; echo "exit $?"', shown)
+    assert (expected.command, expected.status) == ("sdt degrade p.npy --fs 2000", 2)
+    assert expected.lines == shown[:1]
+    assert expectation("sdt sensors show x", ("error: part 'x': no",)).status == 2
+    assert expectation("sdt budget", ("paper8: 8 features",)).status == 0
+
+
+def test_prose_rewrapped_by_the_terminal_width_still_matches():
+    expected = expectation("sdt x", ("skipped sensor a: sensor 'a'", "samples at 26667 Hz"))
+    assert problems(expected, 0, "skipped sensor a: sensor 'a' samples at\n26667 Hz") == []
+
+
+def test_blocks_notes_and_shown_files_are_read(tmp_path):
+    doc = tmp_path / "d.md"
+    doc.write_text(
+        "<!-- doccheck: file=a.toml -->\n```toml\nx = 1\n```\n\n"
+        '<!-- doccheck: skip reason="needs hardware" -->\n```\n$ sdt a\nout\n$ sdt b\n```\n'
+    )
+    found = steps(doc, tmp_path)
+    assert isinstance(found[0], FileStep) and found[0].content == "x = 1\n"
+    assert [(c.text, c.output, c.line) for c in found[1:]] == [
+        ("sdt a", ("out",), 8),
+        ("sdt b", (), 10),
+    ]
+    assert found[1].notes == {"skip": "", "reason": "needs hardware"}

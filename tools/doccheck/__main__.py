@@ -1,0 +1,75 @@
+"""``python -m tools.doccheck [--mode fast|slow|all] [DOC ...]``: run, report, sum up.
+
+Prints one line per command (PASS, FAIL with the reason and what was printed,
+SKIP with the reason), the skipped list, and last ``N passed, N failed, ...``;
+exits 1 when a command failed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import signal
+import sys
+import tempfile
+import time
+from collections import Counter
+from pathlib import Path
+
+from .extract import ROOT, all_steps
+from .runner import run_doc
+
+LABEL = {"passed": "PASS", "failed": "FAIL", "skipped": "SKIP", "xfailed": "XFAIL"}
+
+
+def dump(folder: Path, where: str, command: str, printed: str) -> None:
+    """Save what a command printed, as a document would show it, to paste when it moved."""
+    folder.mkdir(parents=True, exist_ok=True)
+    name = where.replace("/", "_").replace(":", "_") + ".txt"
+    (folder / name).write_text(f"$ {command}\n{printed}", encoding="utf-8")
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the selected documents' commands and print a pytest-like summary line."""
+    parser = argparse.ArgumentParser(prog="python -m tools.doccheck")
+    parser.add_argument("--mode", choices=["fast", "slow", "all"], default="slow")
+    parser.add_argument("--dump", type=Path, help="write each command's printed output here")
+    parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
+    args = parser.parse_args(argv)
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # runs the sandboxes' clean-up
+    with tempfile.TemporaryDirectory(prefix="doccheck-cache-") as folder:
+        cache = Path(os.environ.get("SDT_CACHE_DIR") or folder)  # one cache for every document
+        return check(args, cache)
+
+
+def check(args: argparse.Namespace, cache: Path) -> int:
+    """Run the selected documents in ``args`` with the shared ``cache``; 1 if one failed."""
+    selected = {d: s for d, s in all_steps().items() if not args.docs or d in args.docs}
+    counts: Counter[str] = Counter()
+    skipped: list[str] = []
+    start, cpu = time.monotonic(), 0.0
+    for steps in selected.values():
+        for result in run_doc(steps, args.mode, cache, ROOT):
+            counts[result.status] += 1
+            if args.dump and result.status != "skipped":
+                dump(args.dump, result.command.id, result.command.text, result.printed)
+            label = LABEL.get(result.status, result.status.upper())
+            cpu += result.cpu
+            times = f"{result.seconds:.1f} s, CPU {result.cpu:.1f} s"
+            head = f"{label:5} {result.command.id} ({times}) $ "
+            print(head + result.command.text, flush=True)
+            if result.status == "skipped":
+                skipped.append(f"  {result.command.id}: {result.detail}")
+            elif result.status in {"failed", "xfailed"}:
+                print("      " + result.detail.replace("\n", "\n      "), flush=True)
+    if skipped:
+        print("skipped (cannot run here):\n" + "\n".join(skipped))
+    order = ["passed", "failed", "skipped", "xfailed", "xpassed"]
+    summary = ", ".join(f"{counts[k]} {k}" for k in order if counts[k] or k in order[:2])
+    took = f"{time.monotonic() - start:.0f} s, CPU {cpu:.0f} s"
+    print(f"{summary} in {took} (documented commands)")
+    return 1 if counts["failed"] else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
