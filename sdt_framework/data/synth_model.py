@@ -41,7 +41,13 @@ __all__ = [
     "ChannelPath",
     "Machine",
     "channel_path",
+    "levels_of",
 ]
+
+#: columns (12 s each) per run in the real archive, as the data article gives them: an
+#: acquisition is 60 s stored as five columns; healthy runs 12 acquisitions, faults 2-4
+COLUMNS_PER_ACQUISITION = 5
+REAL_COLUMNS = {"healthy": 60, "fault": 10}
 
 VANES = 6  # no source for either pump's vane count: kept
 
@@ -80,6 +86,7 @@ class Machine:
     speed: str
     rpm: float
     conditions: tuple[tuple[str, int], ...]  # (class, number of levels / healthy runs)
+    absent: frozenset[tuple[str, int]] = frozenset()  # levels the real archive does not hold
 
     @property
     def shaft_hz(self) -> float:
@@ -234,6 +241,11 @@ NODE_CHANNELS: dict[str, ChannelPath] = {
     ),
 }
 NODE_AXES = {"ch6": "x", "ch2": "y", "ch3": "z"}
+
+
+def levels_of(machine: Machine, condition: str, levels: int) -> tuple[int, ...]:
+    """The levels of ``condition`` that ``machine``'s runs hold (healthy: the run numbers)."""
+    return tuple(k for k in range(1, levels + 1) if (condition, k) not in machine.absent)
 
 
 def channel_path(name: str) -> ChannelPath:
