@@ -20,6 +20,7 @@ from sdt_framework.data import open_synthetic, synth_dataset
 from sdt_framework.data import synth_faults as faults
 from sdt_framework.data import synth_model as model
 from sdt_framework.data.synth import generate_run
+from sdt_framework.errors import SDTError
 from sdt_framework.registry import build_registry
 
 FS = 20000.0
@@ -226,3 +227,16 @@ def test_channels_are_views_of_one_event() -> None:
     env = {c: np.abs(signal.hilbert(signal.sosfiltfilt(bp, v[0]))) for c, v in x.items()}
     assert np.corrcoef(env["ch4"], env["ch5"])[0, 1] > 0.3
     assert not np.allclose(x["ch4"], x["ch5"])
+
+
+def test_real_layout_holds_the_archive_columns_in_60_s_acquisitions() -> None:
+    """The data article: healthy runs 60 columns of 12 s (12 acquisitions of 60 s),
+    fault runs 10-20 (2-4 acquisitions); five consecutive columns are one acquisition."""
+    ds = open_synthetic(layout="real", machines="Motor-4", conditions=["healthy", "coupling"])
+    recs = ds.recordings()
+    assert {(r.condition, r.n_acquisitions) for r in recs} == {("healthy", 60), ("coupling", 15)}
+    healthy = next(r for r in recs if r.condition == "healthy")
+    assert len(set(healthy.measurement)) == 12
+    assert healthy.measurement[:6] == (0, 0, 0, 0, 0, 1)
+    with pytest.raises(SDTError, match="layout"):
+        open_synthetic(layout="archive")
