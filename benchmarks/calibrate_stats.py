@@ -56,7 +56,7 @@ def real_cells(path: Path = STATS_DIR / "column0_stats.csv") -> dict[tuple[str, 
 
 
 def statistics(x: np.ndarray) -> dict[str, float]:
-    """RMS, peak, Pearson kurtosis and crest factor of one signal, as the real figures define them."""
+    """RMS, peak, Pearson kurtosis and crest factor of one signal, as the real figures do."""
     rms = float(np.sqrt(np.mean(x * x)))
     centred = x - x.mean()
     kurtosis = float(np.mean(centred**4) / np.mean(centred**2) ** 2)
@@ -159,11 +159,13 @@ def report_seed(seed: int, real: dict, worst: int) -> tuple[dict, float]:
         factor, need = BOUNDS[stat]
         flag = "ok" if share >= need else "BELOW"
         cells = "; ".join(f"M{c[0][-1]} {c[1]} {c[2]} {r:.2f}x" for r, c in ranked)
-        print(f"  {stat:16} within {factor}x: {share:5.1%} (need {need:.0%}) {flag}  worst: {cells}")
+        print(f"  {stat:16} within {factor}x: {share:5.1%} (need {need:.0%}) {flag}")
+        print(f"    worst: {cells}")
     pairs = ratio_pairs(real, synth)
     inside = [abs(s / r - 1) <= RATIO_TOLERANCE for _, s, r in pairs]
     print(f"  RMS ratio to healthy within {RATIO_TOLERANCE:.0%} of the real one: "
-          f"{np.mean(inside):.1%} of {len(pairs)} (family, channel) pairs (need {RATIO_SHARE:.0%})")  # fmt: skip
+          f"{np.mean(inside):.1%} of {len(pairs)} (family, channel) pairs "
+          f"(need {RATIO_SHARE:.0%})")  # fmt: skip
     return {k: v[0] for k, v in shares.items()}, float(np.mean(inside))
 
 
@@ -190,14 +192,16 @@ def main() -> None:
     results = [report_seed(seed, real, args.worst) for seed in range(args.seeds)]
     print_ratios(real, 0)
     print("summary over seeds (min share):")
-    for stat, (factor, need) in BOUNDS.items():
+    for stat, (_, need) in BOUNDS.items():
         low = min(r[0][stat] for r in results)
         print(f"  {stat:16} {low:5.1%} (need {need:.0%}) {'ok' if low >= need else 'BELOW'}")
     low = min(r[1] for r in results)
-    print(f"  ratio to healthy {low:5.1%} (need {RATIO_SHARE:.0%}) {'ok' if low >= RATIO_SHARE else 'BELOW'}")  # fmt: skip
+    verdict = "ok" if low >= RATIO_SHARE else "BELOW"
+    print(f"  ratio to healthy {low:5.1%} (need {RATIO_SHARE:.0%}) {verdict}")
     if args.spread:
         synth, target = healthy_spread(0), real_spread()
-        print("healthy Motor-4, healthy 1 + 2 columns, seed 0: synthetic mean/SD (real); * = >25 % off")
+        print("healthy Motor-4, healthy 1 + 2 columns, seed 0: synthetic mean/SD (real); "
+              "* = >25 % off")  # fmt: skip
         for stat in ("rms_g", "crest_factor", "peak_g", "kurtosis_pearson"):
             cells = []
             for ch in m.CHANNELS:

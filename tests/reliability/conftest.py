@@ -82,3 +82,15 @@ def sdt(tmp_path):
         )
 
     return run
+
+
+def without_estimate(stderr: str) -> str:
+    """``stderr`` less the ``note: this benchmark is …`` line every benchmark prints first.
+
+    Tests of what a benchmark reports at its end compare the rest exactly.
+    """
+    return "".join(
+        line
+        for line in stderr.splitlines(keepends=True)
+        if not line.startswith("note: this benchmark is ")
+    )

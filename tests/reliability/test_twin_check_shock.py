@@ -81,7 +81,7 @@ def test_a_shock_recording_is_judged_with_its_floor_from_quiet_seconds(sdt, meas
 
 
 def test_the_clock_error_is_read_against_the_rate_setting_the_device_runs_at(sdt):
-    """An ADXL357 set to 500 Hz is a fraction of a percent off its setting, not -87 % off 4000 Hz."""
+    """An ADXL357 set to 500 Hz is a fraction of a percent off that setting, not -87 % off 4000."""
     t_dev, _ = _raw(80)
     rate = (len(t_dev) - 1) / (t_dev[-1] - t_dev[0])  # timestamps alone, as idelib gives them
     run = sdt("twin", "check", str(FILE), "--sensor", "adxl357")
