@@ -21,7 +21,7 @@ run: $(STAMP)
 	$(BIN)/sdt benchmark
 
 test: $(STAMP) browser
-	$(BIN)/python -m pytest -q -n 2 --dist loadfile
+	$(BIN)/python -m pytest -q
 
 # the slow documented commands (full benchmarks, sweeps, calibrations) of README.md and docs/*.md
 doccheck: $(STAMP)
