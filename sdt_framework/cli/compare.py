@@ -176,6 +176,15 @@ def compare(
         typer.Option("--margin", help="Equivalence margin in Macro F1 (> 0)."),
     ] = 0.02,
     as_json: Annotated[bool, typer.Option("--json", help="Print JSON instead of tables.")] = False,
+    zones: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--zones",
+            help="Zone table for every machine (built-in name or FILE.toml[#name]), or "
+            "MACHINE=TABLE; repeatable. Default: Motor-2 iso20816-1-typical-low, Motor-4 "
+            "iso10816-3-group2-rigid (docs/severity.md).",
+        ),
+    ] = None,
     out: Annotated[
         Path | None,
         typer.Option(
@@ -198,7 +207,10 @@ def compare(
     classifier and repetition, and the table goes to
     OTHER_DIR/comparison_vs_<first>.csv (or into --out). Runs without a
     partner are named in a warning; a per_recording.parquet that does not
-    cover every run is refused (one line says how to rewrite it).
+    cover every run is refused (one line says how to rewrite it). With one
+    folder, also the ISO zone agreement of every sensor with the reference
+    (V_RMS graded A-D per window, the dangerous better-zone share) and the
+    ISO 20816-1 criterion II alarm agreement, from features.parquet.
 
     Example:
 
@@ -213,12 +225,16 @@ def compare(
       sdt compare results/first-look results/float16
 
       sdt compare results/first-look --out results/verdict   # e.g. from a read-only folder
+
+      sdt compare results/first-look --zones Motor-4=iso10816-3-group2-flexible
     """
     from ..bench.results import write_frame
     from ..report.load import load_results
     from ..verdict import compare as run_compare
     from ..verdict import verdict
+    from .compare_severity import check_zones, print_severity, severity_agreement, severity_json
 
+    check_zones(zones)
     if len(results_dirs) > 2:
         raise SDTError(f"give one or two results folders, got {len(results_dirs)}")
     folders = [load_results(path) for path in results_dirs]
@@ -241,6 +257,9 @@ def compare(
     _unpaired(comparison)
     write_frame(comparison.table, csv_path)
     findings = verdict(comparison)
+    severity, note = None, "two folders: zone agreement is given for one folder"
+    if len(folders) == 1:
+        severity, note = severity_agreement(folders[0], zones)
     if as_json:
         ranking = comparison.ranking
         print_json(
@@ -263,6 +282,7 @@ def compare(
                     "cd": ranking.cd,
                 },
                 "table": json.loads(comparison.table.to_json(orient="records")),
+                "severity": severity_json(severity, note),
             }
         )
         return
@@ -270,4 +290,8 @@ def compare(
     console.print(Text("Verdict", style="bold"))
     for finding in findings:  # user strings (sensor names) are printed as given
         console.print(Text.assemble((finding.scope, "bold"), ": ", finding.text), highlight=False)
+    if severity is not None:
+        print_severity(severity)
+    else:
+        console.print(f"zone agreement: {note}", highlight=False, soft_wrap=True)
     console.print(f"comparison table: {csv_path}", highlight=False, soft_wrap=True)

@@ -17,6 +17,7 @@ from .exploration import exploration_blocks
 from .figures import draw_figures
 from .load import ResultsFolder, load_results
 from .render import render_html, render_markdown
+from .severity import severity_blocks
 from .style import sensor_colors
 from .tables import allocation_table, delta_table, failed_table, table4_table
 from .units import unit_blocks
@@ -159,6 +160,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     if not folder.failed.empty:
         blocks += [Heading("Failed runs", 2), failed_table(folder.failed)]
     blocks += _saturation(folder)
+    blocks += severity_blocks(folder, registry, figures_dir, colors)
     blocks += unit_blocks(folder)
     blocks += deployment_blocks(folder, registry)
     blocks += exploration_blocks(folder.path)

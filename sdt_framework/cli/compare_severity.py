@@ -1,0 +1,93 @@
+"""``sdt compare``'s severity part: ISO zone and alarm agreement of each sensor (text and JSON)."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from rich.table import Table
+
+from ..errors import SDTError
+from .common import console, print_table
+
+__all__ = ["check_zones", "print_severity", "severity_agreement", "severity_json"]
+
+
+def severity_agreement(folder: Any, zones: list[str] | None, seed: int = 0) -> tuple[Any, str]:
+    """The zone agreement of ``folder`` (None and the reason when it cannot be computed)."""
+    from ..severity import assign_tables, zone_agreement
+
+    features = folder.features
+    if features is None or features.empty or "V_RMS" not in features.columns:
+        return None, "features.parquet with V_RMS is missing: no zone agreement"
+    assignments = assign_tables(sorted(features["machine"].unique()), zones or [])
+    if not assignments:
+        return None, "no zone table for these machines; give --zones TABLE or MACHINE=TABLE"
+    return zone_agreement(features, folder.reference, assignments, seed=seed), ""
+
+
+def _pct(value: float) -> str:
+    return "–" if value != value else f"{100 * value:.1f} %"
+
+
+def print_severity(agreement: Any) -> None:
+    """One table per machine pooled over channels: zone and alarm agreement per sensor."""
+    zones, alarms = agreement.zones, agreement.alarms
+    pooled = zones["channel"] == "all"
+    keys = ["machine", "channel", "sensor"]
+    merged = zones[pooled if pooled.any() else ~pooled].merge(alarms, on=keys, suffixes=("", "_a"))
+    out = Table(
+        title=f"ISO zones (V_RMS 10-1000 Hz) against {agreement.reference}, all channels, "
+        f"95 % CI over recordings",
+        title_justify="left",
+    )
+    columns = ("machine", "zone table", "sensor", "same zone", "better zone", "alarm as ref")
+    for column in (*columns, "false alarms"):
+        out.add_column(column)
+    for r in merged.itertuples():
+        out.add_row(
+            r.machine,
+            r.table,
+            r.sensor,
+            f"{_pct(r.share_same)} [{_pct(r.ci_low)}, {_pct(r.ci_high)}]",
+            _pct(r.share_better),
+            _pct(r.fault_alarm_same),
+            f"{_pct(r.false_alarm_sensor)} (ref {_pct(r.false_alarm_ref)})",
+        )
+    print_table(out)
+    for a in agreement.assignments.values():
+        text = f"{a.machine}: {a.table.name} = {a.table.source}"
+        console.print(text, highlight=False, soft_wrap=True)
+
+
+def severity_json(agreement: Any, note: str) -> dict[str, Any]:
+    """The severity figures for ``--json``: tables used, zones, confusion, alarms."""
+    if agreement is None:
+        return {"note": note}
+
+    def records(frame):
+        return json.loads(frame.to_json(orient="records"))
+
+    return {
+        "reference": agreement.reference,
+        "tables": {
+            a.machine: {
+                "name": a.table.name,
+                "source": a.table.source,
+                "boundaries_mm_s": a.table.boundaries.model_dump(),
+                "why": a.reason,
+            }
+            for a in agreement.assignments.values()
+        },
+        "unassigned": agreement.unassigned,
+        "zones": records(agreement.zones),
+        "confusion": records(agreement.confusion),
+        "alarms": records(agreement.alarms),
+    }
+
+
+def check_zones(zones: list[str] | None) -> None:
+    """Refuse an empty --zones value early, before any work."""
+    for value in zones or []:
+        if not value.strip() or value.endswith("="):
+            raise SDTError(f"--zones {value!r}: give TABLE or MACHINE=TABLE")

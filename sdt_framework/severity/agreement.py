@@ -1,0 +1,199 @@
+"""Zone and alarm agreement of every sensor with the reference, from features.parquet.
+
+Each window's V_RMS (10-1000 Hz, mm/s) is graded A-D by its machine's zone
+table (:mod:`.tables`), for the reference and for each sensor; windows are
+paired by machine, channel, recording, acquisition and window index. Per
+machine and channel (and per machine over all channels, "all"): the share of
+windows graded in the same zone, the zone confusion matrix (reference rows,
+sensor columns) and the share graded in a *better* zone than the reference
+(the dangerous error: the node would report a healthier machine than it is).
+
+Alarms follow ISO 20816-1:2016 5.4 (criterion II): per machine and channel,
+the reference's healthy baseline (mean V_RMS of its healthy windows) sets
+ALARM = min(baseline + 0.25 x B/C, 1.25 x B/C) and TRIP = 1.25 x C/D; each
+sensor's windows are compared with these thresholds. Per sensor: the share of
+fault windows on which it raises the alarm as the reference does (both or
+neither), the alarms it misses, and its false alarms on healthy windows. The
+alarm is one bit a node can send per report.
+
+Intervals are at the recording level, as ``sdt compare`` gives them for Macro
+F1 (:mod:`sdt_framework.verdict.recordings`): recordings are drawn with
+replacement within each condition, and the share recomputed per draw.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from ..errors import SDTError
+from ..seeding import rng
+from ..verdict.recordings import stratified_weights
+from .tables import ZONES, Assignment
+
+__all__ = [
+    "ALARM_FRACTION",
+    "HEADROOM",
+    "Agreement",
+    "alarm_thresholds",
+    "paired_zones",
+    "zone_agreement",
+]
+
+ALARM_FRACTION = 0.25  # ISO 20816-1:2016 5.3/5.4.1: a quarter of the B/C boundary
+HEADROOM = 1.25  # 5.4.1/5.4.2: ALARM <= 1.25 x B/C, TRIP <= 1.25 x C/D
+_WINDOW = ["machine", "channel", "recording_id", "acquisition", "window"]
+
+
+@dataclass
+class Agreement:
+    """Zone and alarm agreement tables (one row per machine, channel and sensor)."""
+
+    reference: str
+    zones: pd.DataFrame  # share_same (+ interval), share_better, share_worse, n_windows
+    confusion: pd.DataFrame  # long: machine, channel, sensor, reference_zone, sensor_zone, count
+    alarms: pd.DataFrame  # thresholds and agreement per machine, channel, sensor
+    assignments: dict[str, Assignment]
+    unassigned: list[str]  # machines without a zone table (left out)
+
+
+def paired_zones(
+    features: pd.DataFrame, reference: str, assignments: dict[str, Assignment]
+) -> pd.DataFrame:
+    """One row per (sensor window, reference window) pair with both V_RMS and zones."""
+    need = {*_WINDOW, "sensor", "condition", "severity", "V_RMS"}
+    missing = sorted(need - set(features.columns))
+    if missing:
+        raise SDTError(f"features.parquet lacks column(s) {missing}: the severity needs V_RMS")
+    frame = features[features["machine"].isin(list(assignments))]
+    if "unit" in frame.columns:  # per-unit runs: the first unit of each sensor
+        frame = frame[frame["unit"] == frame.groupby("sensor")["unit"].transform("min")]
+    ref = frame[frame["sensor"] == reference]
+    if ref.empty:
+        raise SDTError(f"features.parquet has no windows of the reference {reference!r}")
+    ref = ref[[*_WINDOW, "condition", "severity", "V_RMS"]].rename(columns={"V_RMS": "v_ref"})
+    others = frame[frame["sensor"] != reference][[*_WINDOW, "sensor", "V_RMS"]]
+    pairs = others.merge(ref, on=_WINDOW, how="inner").rename(columns={"V_RMS": "v_sensor"})
+    cuts = np.stack([assignments[m].table.cuts for m in pairs["machine"]]) if len(pairs) else None
+    for side in ("ref", "sensor"):
+        values = pairs[f"v_{side}"].to_numpy(float)
+        pairs[f"zone_{side}"] = (values[:, None] > cuts).sum(axis=1) if cuts is not None else 0
+    pairs["healthy"] = pairs["severity"].isna().to_numpy()
+    return pairs
+
+
+def alarm_thresholds(pairs: pd.DataFrame, assignments: dict[str, Assignment]) -> pd.DataFrame:
+    """ALARM and TRIP per machine and channel from the reference's healthy baseline."""
+    healthy = pairs[pairs["healthy"]].drop_duplicates(_WINDOW)
+    base = healthy.groupby(["machine", "channel"])["v_ref"].mean().rename("baseline").reset_index()
+    b_c = base["machine"].map(lambda m: assignments[m].table.boundaries.b_c)
+    c_d = base["machine"].map(lambda m: assignments[m].table.boundaries.c_d)
+    base["alarm"] = np.minimum(base["baseline"] + ALARM_FRACTION * b_c, HEADROOM * b_c)
+    base["trip"] = HEADROOM * c_d
+    return base
+
+
+def _interval(
+    frame: pd.DataFrame, hit: str, key: tuple, n_boot: int, seed: int
+) -> tuple[float, float]:
+    """95 % percentile interval of the share ``hit`` over recordings resampled per condition."""
+    per = frame.groupby("recording_id").agg(
+        n=(hit, "size"), k=(hit, "sum"), c=("condition", "first")
+    )
+    if per["c"].value_counts().min() < 2:
+        return np.nan, np.nan
+    weights = stratified_weights(per["c"].to_numpy(), n_boot, rng(seed, "severity", *key))
+    shares = (weights @ per["k"].to_numpy(float)) / (weights @ per["n"].to_numpy(float))
+    low, high = np.percentile(shares, [2.5, 97.5])
+    return float(low), float(high)
+
+
+def _scopes(pairs: pd.DataFrame):
+    """(machine, channel, sensor, rows) per channel and per machine over all channels."""
+    for (machine, channel, sensor), rows in pairs.groupby(["machine", "channel", "sensor"]):
+        yield machine, str(channel), sensor, rows
+    for (machine, sensor), rows in pairs.groupby(["machine", "sensor"]):
+        if rows["channel"].nunique() > 1:
+            yield machine, "all", sensor, rows
+
+
+def zone_agreement(
+    features: pd.DataFrame,
+    reference: str,
+    assignments: dict[str, Assignment],
+    *,
+    n_boot: int = 2000,
+    seed: int = 0,
+) -> Agreement:
+    """Zone and alarm agreement of each sensor with ``reference`` (see the module doc)."""
+    machines = sorted(features["machine"].unique())
+    unassigned = [m for m in machines if m not in assignments]
+    pairs = paired_zones(features, reference, assignments)
+    thresholds = alarm_thresholds(pairs, assignments)
+    pairs = pairs.merge(thresholds, on=["machine", "channel"], how="left")
+    pairs["same"] = pairs["zone_ref"] == pairs["zone_sensor"]
+    pairs["better"] = pairs["zone_sensor"] < pairs["zone_ref"]
+    pairs["alarm_ref"] = pairs["v_ref"] > pairs["alarm"]
+    pairs["alarm_sensor"] = pairs["v_sensor"] > pairs["alarm"]
+    pairs["alarm_same"] = pairs["alarm_ref"] == pairs["alarm_sensor"]
+    pairs["trip_same"] = (pairs["v_ref"] > pairs["trip"]) == (pairs["v_sensor"] > pairs["trip"])
+    zones, alarms, confusion = [], [], []
+    for machine, channel, sensor, rows in _scopes(pairs):
+        key = (machine, channel, sensor)
+        low, high = _interval(rows, "same", key, n_boot, seed)
+        zones.append(
+            {
+                "machine": machine,
+                "channel": channel,
+                "sensor": sensor,
+                "table": assignments[machine].table.name,
+                "n_windows": len(rows),
+                "n_recordings": rows["recording_id"].nunique(),
+                "share_same": rows["same"].mean(),
+                "ci_low": low,
+                "ci_high": high,
+                "share_better": rows["better"].mean(),
+                "share_worse": (rows["zone_sensor"] > rows["zone_ref"]).mean(),
+            }
+        )
+        counts = np.zeros((4, 4), dtype=np.int64)
+        np.add.at(counts, (rows["zone_ref"].to_numpy(), rows["zone_sensor"].to_numpy()), 1)
+        confusion += [
+            (machine, channel, sensor, ZONES[i], ZONES[j], int(counts[i, j]))
+            for i in range(4)
+            for j in range(4)
+        ]
+        fault, healthy = rows[~rows["healthy"]], rows[rows["healthy"]]
+        a_low, a_high = _interval(fault, "alarm_same", (*key, "alarm"), n_boot, seed)
+        alarms.append(
+            {
+                "machine": machine,
+                "channel": channel,
+                "sensor": sensor,
+                "baseline": rows["baseline"].iloc[0] if channel != "all" else np.nan,
+                "alarm": rows["alarm"].iloc[0] if channel != "all" else np.nan,
+                "trip": rows["trip"].iloc[0],
+                "n_fault": len(fault),
+                "n_healthy": len(healthy),
+                "fault_alarm_ref": fault["alarm_ref"].mean(),
+                "fault_alarm_sensor": fault["alarm_sensor"].mean(),
+                "fault_alarm_same": fault["alarm_same"].mean(),
+                "ci_low": a_low,
+                "ci_high": a_high,
+                "missed": (fault["alarm_ref"] & ~fault["alarm_sensor"]).mean(),
+                "false_alarm_ref": healthy["alarm_ref"].mean(),
+                "false_alarm_sensor": healthy["alarm_sensor"].mean(),
+                "trip_same": rows["trip_same"].mean(),
+            }
+        )
+    columns = ["machine", "channel", "sensor", "reference_zone", "sensor_zone", "count"]
+    return Agreement(
+        reference,
+        pd.DataFrame(zones),
+        pd.DataFrame(confusion, columns=columns),
+        pd.DataFrame(alarms),
+        assignments,
+        unassigned,
+    )

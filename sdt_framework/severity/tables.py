@@ -1,0 +1,235 @@
+"""Zone tables as data: ISO severity boundaries in user-editable TOML files, validated.
+
+A zone table is three boundaries of broad-band r.m.s. velocity (A/B, B/C,
+C/D in mm/s over 10-1000 Hz, the band of the features' V_RMS) with the
+document, edition and table they come from. The tables shipped with the
+package are ``iso10816-3.toml`` and ``iso20816-1.toml`` next to this module
+(sources in their comments and in docs/severity.md); a plant's own alarm
+limits are a file of the same form, given by path. A file holds one or more
+``[[table]]`` entries; ``FILE.toml#name`` picks one of several.
+
+Every fault in a table (boundaries not increasing, an unknown machine group,
+a unit other than mm/s, another band) is one :class:`SpecFileError` line.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+
+from ..errors import SDTError, SpecFileError
+from ..toml_files import parse_toml, read_toml, validate_file
+
+__all__ = [
+    "BUILTIN_FILES",
+    "DEFAULT_TABLES",
+    "MACHINE_GROUPS",
+    "ZONES",
+    "Assignment",
+    "ZoneTable",
+    "assign_tables",
+    "builtin_tables",
+    "grade",
+    "load_zone_file",
+    "resolve_table",
+]
+
+ZONES = ("A", "B", "C", "D")
+MACHINE_GROUPS = ("group 1", "group 2", "typical", "plant")
+BUILTIN_FILES = ("iso10816-3.toml", "iso20816-1.toml")
+#: the band of the V_RMS feature the tables grade (plugins/features/paper8.py)
+V_RMS_BAND_HZ = (10.0, 1000.0)
+
+#: which table grades which machine of the two pump datasets, and why
+DEFAULT_TABLES: dict[str, tuple[str, str]] = {
+    "Motor-2": (
+        "iso20816-1-typical-low",
+        "11 kW 4-pole set: below ISO 10816-3's 15 kW, so ISO 20816-1's typical ranges at "
+        "their low end, where Table C.1 puts motors up to 15 kW",
+    ),
+    "Motor-4": (
+        "iso10816-3-group2-rigid",
+        "22 kW 2-pole set: ISO 10816-3 group 2 (15-300 kW); rigid, the stricter support "
+        "class, as no source gives the rig's support natural frequency",
+    ),
+}
+
+
+class Boundaries(BaseModel):
+    """The A/B, B/C and C/D boundaries, strictly increasing, in the table's unit."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    a_b: float = Field(gt=0, allow_inf_nan=False)
+    b_c: float = Field(gt=0, allow_inf_nan=False)
+    c_d: float = Field(gt=0, allow_inf_nan=False)
+
+    @model_validator(mode="after")
+    def _increasing(self) -> Boundaries:
+        if not self.a_b < self.b_c < self.c_d:
+            raise ValueError(
+                f"boundaries must increase a_b < b_c < c_d (zone A below zone B below C), got "
+                f"{self.a_b:g}, {self.b_c:g}, {self.c_d:g}"
+            )
+        return self
+
+
+class ZoneTable(BaseModel):
+    """One zone table: its boundaries and where they come from."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+    name: str = Field(min_length=1, pattern=r"^[A-Za-z0-9][A-Za-z0-9._-]*$")
+    title: str = Field(min_length=1)
+    machine_group: str
+    support: Literal["rigid", "flexible", "any"] = "any"
+    unit: str
+    band_hz: tuple[float, float] = V_RMS_BAND_HZ
+    document: str = Field(min_length=1)
+    edition: str = Field(min_length=1)
+    table_ref: str = Field(min_length=1)
+    boundaries: Boundaries
+
+    @field_validator("machine_group")
+    @classmethod
+    def _group(cls, value: str) -> str:
+        if value not in MACHINE_GROUPS:
+            raise ValueError(
+                f"unknown machine group {value!r}; use one of {', '.join(MACHINE_GROUPS)} "
+                f"('plant' for your own limits)"
+            )
+        return value
+
+    @field_validator("unit")
+    @classmethod
+    def _unit(cls, value: str) -> str:
+        if value != "mm/s":
+            raise ValueError(
+                f"unit {value!r} is not mm/s: the tables grade V_RMS in mm/s; convert the "
+                f'boundaries (1 in/s = 25.4 mm/s) and write unit = "mm/s"'
+            )
+        return value
+
+    @field_validator("band_hz")
+    @classmethod
+    def _band(cls, value: tuple[float, float]) -> tuple[float, float]:
+        if tuple(map(float, value)) != V_RMS_BAND_HZ:
+            raise ValueError(
+                f"band {list(value)} Hz is not the 10-1000 Hz band of the V_RMS feature the "
+                f"tables grade; write band_hz = [10.0, 1000.0]"
+            )
+        return value
+
+    @property
+    def cuts(self) -> np.ndarray:
+        """The three boundaries as an array, for :func:`grade`."""
+        b = self.boundaries
+        return np.array([b.a_b, b.b_c, b.c_d])
+
+    @property
+    def source(self) -> str:
+        """Document, edition and table, as a citation."""
+        return f"{self.document}:{self.edition}, {self.table_ref}"
+
+
+class _ZoneFile(BaseModel):
+    model_config = ConfigDict(extra="forbid")
+
+    table: list[ZoneTable] = Field(min_length=1)
+
+
+def grade(v_rms: np.ndarray, table: ZoneTable) -> np.ndarray:
+    """Zone index 0-3 (A-D) of each velocity; a value on a boundary is in the lower zone."""
+    return np.searchsorted(table.cuts, np.asarray(v_rms, dtype=float), side="left")
+
+
+def _validated(data: dict, where: str | os.PathLike[str]) -> list[ZoneTable]:
+    tables = validate_file(_ZoneFile, data, where, unknown="unknown field (see docs/severity.md)")
+    names = [t.name for t in tables.table]
+    doubled = sorted({n for n in names if names.count(n) > 1})
+    if doubled:
+        raise SpecFileError(where, "table", f"table name(s) {doubled} given twice")
+    return tables.table
+
+
+def load_zone_file(path: str | os.PathLike[str]) -> list[ZoneTable]:
+    """Every table of the zone-table file at ``path``."""
+    return _validated(read_toml(path, what="zone table file"), path)
+
+
+def builtin_tables() -> dict[str, ZoneTable]:
+    """The tables shipped with sdt, by name."""
+    out: dict[str, ZoneTable] = {}
+    for name in BUILTIN_FILES:
+        text = resources.files(__package__).joinpath(name).read_text(encoding="utf-8")
+        out.update({t.name: t for t in _validated(parse_toml(text, name), name)})
+    return out
+
+
+def resolve_table(spec: str) -> ZoneTable:
+    """A table by built-in name, by ``FILE.toml`` (one table) or ``FILE.toml#name``."""
+    path, _, name = spec.partition("#")
+    if path.endswith(".toml") or Path(path).exists():
+        tables = load_zone_file(path)
+        if name:
+            found = [t for t in tables if t.name == name]
+            if not found:
+                raise SpecFileError(path, "", f"no table named {name!r}; it holds {_names(tables)}")
+            return found[0]
+        if len(tables) > 1:
+            raise SpecFileError(
+                path, "", f"holds {len(tables)} tables; pick one as {path}#NAME ({_names(tables)})"
+            )
+        return tables[0]
+    known = builtin_tables()
+    if spec not in known:
+        raise SDTError(
+            f"unknown zone table {spec!r}; give a built-in name ({', '.join(known)}) or a "
+            f"path to a .toml zone table file"
+        )
+    return known[spec]
+
+
+def _names(tables: list[ZoneTable]) -> str:
+    return ", ".join(t.name for t in tables)
+
+
+@dataclass(frozen=True)
+class Assignment:
+    """The table that grades one machine, and why it was chosen."""
+
+    machine: str
+    table: ZoneTable
+    reason: str
+
+
+def assign_tables(machines: list[str], choices: list[str] = ()) -> dict[str, Assignment]:
+    """The table for each machine: ``choices`` ("TABLE" or "MACHINE=TABLE"), else the default.
+
+    A machine with neither a choice nor a default (a user's dataset) gets no
+    table and is left out of the severity figures; the caller says so.
+    """
+    chosen: dict[str, str] = {}
+    for choice in choices:
+        machine, sep, table = choice.rpartition("=")
+        if sep and machine not in machines:
+            raise SDTError(
+                f"--zones {choice!r}: no machine {machine!r} in the results; "
+                f"machines are {', '.join(machines)}"
+            )
+        for target in [machine] if sep else machines:
+            chosen[target] = table
+    out: dict[str, Assignment] = {}
+    for machine in machines:
+        if machine in chosen:
+            out[machine] = Assignment(machine, resolve_table(chosen[machine]), "given (--zones)")
+        elif machine in DEFAULT_TABLES:
+            name, reason = DEFAULT_TABLES[machine]
+            out[machine] = Assignment(machine, builtin_tables()[name], reason)
+    return out
