@@ -60,6 +60,7 @@ ALLOWED: dict[str, set[str]] = {
     | _IO
     | {"chain", "data", "features", "parts", "registry", "specs", "stages", "toml_files"},
     "verdict": {"bench", "errors", "seeding"},
+    "severity": {"data", "errors", "seeding", "toml_files", "verdict"},
     "explore": _BASE
     | _IO
     | {"bench", "data", "registry", "sensor_files", "specs", "stages", "toml_files"},
@@ -72,6 +73,7 @@ ALLOWED: dict[str, set[str]] = {
         "explore",
         "features",
         "registry",
+        "severity",
         "specs",
         "validation",
         "verdict",
@@ -87,6 +89,7 @@ ALLOWED: dict[str, set[str]] = {
         "parts",
         "registry",
         "report",
+        "severity",
         "specs",
         "twin",
         "validation",

@@ -87,7 +87,11 @@ def severity_json(agreement: Any, note: str) -> dict[str, Any]:
 
 
 def check_zones(zones: list[str] | None) -> None:
-    """Refuse an empty --zones value early, before any work."""
+    """Read and validate every --zones table before any other work (a bad one: one line)."""
+    from ..severity import resolve_table
+
     for value in zones or []:
-        if not value.strip() or value.endswith("="):
+        table = value.rpartition("=")[2]
+        if not table.strip():
             raise SDTError(f"--zones {value!r}: give TABLE or MACHINE=TABLE")
+        resolve_table(table)

@@ -29,6 +29,7 @@ from ..errors import SDTError
 from ..severity import (
     BEARINGS,
     asd,
+    chain_bandwidth,
     defect_frequencies,
     envelope_band,
     envelope_spectrum,
@@ -49,13 +50,6 @@ BEARING_RUNS = {
     "bearing pump": ("6308", "ch4"),
 }
 _LINE_STYLES = {"BPFO": "-", "BPFI": "--", "BSF": ":", "FTF": "-."}
-
-
-def _bandwidth(spec: Any) -> float:
-    """The chain's usable bandwidth: the lowest of its cut-offs and Nyquist."""
-    cutoffs = [getattr(spec, name, None) for name in ("analog_cutoff_hz", "digital_cutoff_hz")]
-    values = [c for c in cutoffs if c] + [spec.sampling_rate_hz / 2]
-    return float(min(values))
 
 
 def _panels(fig: MplFigure, count: int) -> list:
@@ -161,7 +155,7 @@ def _envelope_blocks(mine: list, machine: str, specs: list, seed: int, figures_d
             f"{machine} {rec.run} {channel}: envelope spectrum, {bearing} lines at "
             f"{shaft * 60:.0f} rpm"
         )
-        bandwidths = {s.name: _bandwidth(s) for s in specs}
+        bandwidths = {s.name: chain_bandwidth(s) for s in specs}
         fig, notes = envelope_figure(traces, bandwidths, lines, title)
         name = f"envelope_{machine}_{condition.replace(' ', '_')}.png"
         path = save_figure(fig, figures_dir / name)

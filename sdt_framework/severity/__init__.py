@@ -24,6 +24,7 @@ from .bearings import BEARINGS, defect_frequencies, defect_orders
 from .spectra import (
     Spectrum,
     asd,
+    chain_bandwidth,
     envelope_band,
     envelope_spectrum,
     running_speed,
@@ -57,6 +58,7 @@ __all__ = [
     "asd",
     "assign_tables",
     "builtin_tables",
+    "chain_bandwidth",
     "defect_frequencies",
     "defect_orders",
     "envelope_band",

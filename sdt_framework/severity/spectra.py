@@ -16,6 +16,7 @@ __all__ = [
     "G",
     "Spectrum",
     "asd",
+    "chain_bandwidth",
     "envelope_band",
     "envelope_spectrum",
     "running_speed",
@@ -50,14 +51,24 @@ class Spectrum:
         )
 
 
+def chain_bandwidth(spec: object) -> float:
+    """A sensor chain's usable bandwidth: the lowest of its analog/digital cut-offs and Nyquist."""
+    cutoffs = [getattr(spec, name, None) for name in ("analog_cutoff_hz", "digital_cutoff_hz")]
+    return float(min([c for c in cutoffs if c] + [spec.sampling_rate_hz / 2]))
+
+
 def envelope_band(fs: float, bandwidth_hz: float, top_hz: float = 8000.0) -> tuple[float, float]:
-    """Band-pass for the envelope: the top 2 octaves below the chain's bandwidth (<= 8 kHz).
+    """Band-pass for the envelope: two octaves ending at half the chain's bandwidth (<= 8 kHz).
 
     Impacts ring the housing's kHz resonances; a sensor sees them only up to
-    its bandwidth, so the band sits just under it: (hi / 4, hi) with
-    hi = min(0.9 x bandwidth, 0.45 x fs, ``top_hz``).
+    its bandwidth, and the top of a first-order chain's band (the ADXL345's)
+    carries what its filter lets alias, so the band is (hi / 4, hi) with
+    hi = min(0.5 x bandwidth, 0.45 x fs, ``top_hz``). On the synthetic Motor-2
+    outer-race fault this gives 1.25-5 kHz for the reference, 200-800 Hz for
+    the ADXL345 and 125-500 Hz for the ADXL357; with 0.9 x bandwidth the
+    ADXL345's strongest envelope line was at 190 Hz, not at BPFO.
     """
-    high = min(0.9 * bandwidth_hz, 0.45 * fs, top_hz)
+    high = min(0.5 * bandwidth_hz, 0.45 * fs, top_hz)
     return high / 4, high
 
 
