@@ -31,32 +31,31 @@ def _pct(value: float) -> str:
 
 
 def print_severity(agreement: Any) -> None:
-    """One table per machine pooled over channels: zone and alarm agreement per sensor."""
+    """One row per machine and sensor, pooled over channels: zone and alarm agreement."""
     zones, alarms = agreement.zones, agreement.alarms
     pooled = zones["channel"] == "all"
     keys = ["machine", "channel", "sensor"]
     merged = zones[pooled if pooled.any() else ~pooled].merge(alarms, on=keys, suffixes=("", "_a"))
     out = Table(
-        title=f"ISO zones (V_RMS 10-1000 Hz) against {agreement.reference}, all channels, "
-        f"95 % CI over recordings",
+        title=f"ISO zones of V_RMS (10-1000 Hz) against {agreement.reference}, all channels",
         title_justify="left",
     )
-    columns = ("machine", "zone table", "sensor", "same zone", "better zone", "alarm as ref")
-    for column in (*columns, "false alarms"):
+    for column in ("machine", "sensor", "same zone [95 % CI]", "better zone", "alarm as ref"):
         out.add_column(column)
+    out.add_column("false alarms (ref)")
     for r in merged.itertuples():
+        ci = "" if r.ci_low != r.ci_low else f" [{100 * r.ci_low:.1f}, {100 * r.ci_high:.1f}]"
         out.add_row(
             r.machine,
-            r.table,
             r.sensor,
-            f"{_pct(r.share_same)} [{_pct(r.ci_low)}, {_pct(r.ci_high)}]",
+            f"{_pct(r.share_same)}{ci}",
             _pct(r.share_better),
             _pct(r.fault_alarm_same),
-            f"{_pct(r.false_alarm_sensor)} (ref {_pct(r.false_alarm_ref)})",
+            f"{_pct(r.false_alarm_sensor)} ({_pct(r.false_alarm_ref)})",
         )
     print_table(out)
     for a in agreement.assignments.values():
-        text = f"{a.machine}: {a.table.name} = {a.table.source}"
+        text = f"{a.machine} zone table: {a.table.name} ({a.table.source})"
         console.print(text, highlight=False, soft_wrap=True)
 
 

@@ -115,7 +115,7 @@ def _alarms(agreement: Agreement) -> Table:
             r.channel,
             r.sensor,
             "–" if np.isnan(r.baseline) else f"{r.baseline:.2f}",
-            "–" if np.isnan(r.alarm) else f"{r.alarm:.2f}",
+            "–" if np.isnan(r.alarm) else f"{r.alarm:.2f}{' *' if r.capped else ''}",
             f"{r.trip:.2f}",
             f"{_pct(r.fault_alarm_same)} {_ci(r.ci_low, r.ci_high)}",
             f"{_pct(r.fault_alarm_sensor)} ({_pct(r.fault_alarm_ref)})",
@@ -138,7 +138,13 @@ def _alarms(agreement: Agreement) -> Table:
         "false alarms, healthy (reference)",
         "TRIP as reference",
     )
-    return Table(header, rows)
+    note = (
+        "* capped at 1.25 x B/C: the reference's healthy baseline is already above B/C "
+        "(zone C or D by this table), so the ALARM sits below it and healthy windows alarm"
+        if agreement.alarms["capped"].any()
+        else ""
+    )
+    return Table(header, rows, note)
 
 
 def severity_blocks(
@@ -163,7 +169,7 @@ def severity_blocks(
             "sensor and by the reference, windows paired one to one (repetition 0). "
             "'Better zone' is the dangerous error: the sensor reports a healthier machine "
             "than the reference does. Intervals: 95 % percentile over 2000 resamples of the "
-            "test recordings within each condition, as `sdt compare` gives them for Macro F1."
+            "recordings within each condition, as `sdt compare` gives them for Macro F1."
         ),
         Heading("Zone tables used", 3),
         *_tables_used(agreement),

@@ -91,6 +91,7 @@ def alarm_thresholds(pairs: pd.DataFrame, assignments: dict[str, Assignment]) ->
     b_c = base["machine"].map(lambda m: assignments[m].table.boundaries.b_c)
     c_d = base["machine"].map(lambda m: assignments[m].table.boundaries.c_d)
     base["alarm"] = np.minimum(base["baseline"] + ALARM_FRACTION * b_c, HEADROOM * b_c)
+    base["capped"] = base["baseline"] + ALARM_FRACTION * b_c > HEADROOM * b_c  # baseline > B/C
     base["trip"] = HEADROOM * c_d
     return base
 
@@ -174,6 +175,7 @@ def zone_agreement(
                 "sensor": sensor,
                 "baseline": rows["baseline"].iloc[0] if channel != "all" else np.nan,
                 "alarm": rows["alarm"].iloc[0] if channel != "all" else np.nan,
+                "capped": bool(rows["capped"].iloc[0]) if channel != "all" else False,
                 "trip": rows["trip"].iloc[0],
                 "n_fault": len(fault),
                 "n_healthy": len(healthy),

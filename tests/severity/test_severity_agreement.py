@@ -122,8 +122,29 @@ def test_alarm_thresholds_follow_criterion_ii_from_the_reference_healthy_baselin
             (result.alarms["sensor"] == "double") & (result.alarms["channel"] == channel)
         ]
         assert row["alarm"].item() == pytest.approx(alarm)
+        assert row["capped"].item() == (healthy.mean() > 2.8)  # baseline beyond B/C
         assert row["trip"].item() == pytest.approx(1.25 * 4.5)
         fault = mine[mine["severity"].notna()]["V_RMS"].to_numpy(np.float64)
         same = ((fault > alarm) == (2 * fault > alarm)).mean()
         assert row["fault_alarm_same"].item() == pytest.approx(same)
         assert row["false_alarm_sensor"].item() == pytest.approx((2 * healthy > alarm).mean())
+
+
+def test_the_report_section_shows_the_table_used_and_the_agreement(features, tmp_path) -> None:
+    from sdt_framework.report.document import Table
+    from sdt_framework.report.load import ResultsFolder
+    from sdt_framework.report.severity import severity_blocks
+
+    results = pd.DataFrame(
+        columns=["machine", "scenario", "sensor", "classifier", "macro_f1", "status"]
+    )
+    folder = ResultsFolder(tmp_path, results, features=features)
+    folder.summary = {"reference": "ref"}
+    blocks = severity_blocks(folder, None, tmp_path / "figures", {})
+    tables = [b for b in blocks if isinstance(b, Table)]
+    used = tables[0].rows[0]
+    assert used[:3] == ("Motor-4", "iso10816-3-group2-rigid", "1.4 / 2.8 / 4.5")
+    assert "ISO 10816-3:2009" in used[3] and "Table A.2" in used[3]
+    agreement = {(r[1], r[2]): r[4] for r in tables[1].rows}
+    assert agreement[("all", "same")] == "100.0 %"
+    assert blocks[-1].text.startswith("Not drawn: config.toml")  # no dataset to re-open
