@@ -41,7 +41,7 @@ __all__ = [
 ]
 
 ZONES = ("A", "B", "C", "D")
-MACHINE_GROUPS = ("group 1", "group 2", "typical", "plant")
+MACHINE_GROUPS = ("group 1", "group 2", "typical", "plant", "pump category I", "pump category II")
 BUILTIN_FILES = ("iso10816-3.toml", "iso20816-1.toml")
 #: the band of the V_RMS feature the tables grade (plugins/features/paper8.py)
 V_RMS_BAND_HZ = (10.0, 1000.0)
