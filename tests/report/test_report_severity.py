@@ -1,0 +1,68 @@
+"""`sdt compare --json` and the report carry the zone agreement, checked from features.parquet."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+from typer.testing import CliRunner
+
+from sdt_framework.cli.main import app
+
+from .conftest import assert_real_png
+
+runner = CliRunner()
+LOW = (0.71, 1.8, 4.5)  # ISO 20816-1 Table C.1, low end: the default for Motor-2
+
+
+def test_compare_json_zone_agreement_matches_features_parquet(results_dir) -> None:
+    result = runner.invoke(app, ["compare", str(results_dir), "--json"])
+    assert result.exit_code == 0, result.output
+    severity = json.loads(result.stdout)["severity"]
+    assert severity["tables"]["Motor-2"]["name"] == "iso20816-1-typical-low"
+    assert "Table C.1" in severity["tables"]["Motor-2"]["source"]
+    # independent: pair the windows, grade both V_RMS with explicit comparisons
+    f = pd.read_parquet(results_dir / "features.parquet")
+    keys = ["machine", "channel", "recording_id", "acquisition", "window"]
+    ref = f[f["sensor"] == "wilcoxon-786b10"][[*keys, "V_RMS"]]
+    mems = f[f["sensor"] == "adxl345"][[*keys, "V_RMS"]]
+    pairs = mems.merge(ref, on=keys, suffixes=("_s", "_r"))
+
+    def zone(v):
+        return np.select([v <= LOW[0], v <= LOW[1], v <= LOW[2]], [0, 1, 2], 3)
+
+    same = zone(pairs["V_RMS_s"].to_numpy(float)) == zone(pairs["V_RMS_r"].to_numpy(float))
+    better = zone(pairs["V_RMS_s"].to_numpy(float)) < zone(pairs["V_RMS_r"].to_numpy(float))
+    rows = {(z["channel"], z["sensor"]): z for z in severity["zones"]}
+    pooled = rows[("all", "adxl345")]
+    assert pooled["share_same"] == pytest.approx(same.mean())
+    assert pooled["share_better"] == pytest.approx(better.mean())
+    assert pooled["n_windows"] == len(pairs)
+    assert pooled["ci_low"] <= pooled["share_same"] <= pooled["ci_high"]
+    for channel in ("ch1", "ch4"):
+        mine = (pairs["channel"] == channel).to_numpy()
+        assert rows[(channel, "adxl345")]["share_same"] == pytest.approx(same[mine].mean())
+
+
+def test_compare_text_names_the_zone_table(results_dir) -> None:
+    result = runner.invoke(app, ["compare", str(results_dir)], env={"COLUMNS": "200"})
+    assert result.exit_code == 0, result.output
+    assert "ISO zones of V_RMS (10-1000 Hz) against wilcoxon-786b10" in result.stdout
+    assert "Motor-2 zone table: iso20816-1-typical-low (ISO 20816-1:2016" in result.stdout
+
+
+def test_report_has_the_severity_section_and_captioned_spectra(full_report) -> None:
+    folder, written = full_report
+    text = written["md"].read_text(encoding="utf-8")
+    section = text[text.index("## Severity and alarms") :]
+    assert "### Zone agreement" in section and "iso20816-1-typical-low" in section
+    assert "### Alarms (ISO 20816-1 criterion II)" in section
+    # ch4 is in the small folder: the pump bearing's envelope (6308 lines) is drawn
+    assert_real_png(folder / "figures" / "envelope_Motor-2_bearing_pump.png")
+    caption = next(line for line in section.splitlines() if "6308 lines" in line and line[0] == "*")
+    for words in ("one-sided peak amplitude", "Hann window", "RBW", "unit g"):
+        assert words in caption
+    assert_real_png(folder / "figures" / "velocity_Motor-2.png")
+    assert_real_png(folder / "figures" / "waterfall_Motor-2.png")
