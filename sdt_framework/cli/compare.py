@@ -259,7 +259,7 @@ def compare(
     findings = verdict(comparison)
     severity, note = None, "two folders: zone agreement is given for one folder"
     if len(folders) == 1:
-        severity, note = severity_agreement(folders[0], zones)
+        severity, note = severity_agreement(folders[0], zones, comparison.baseline)
     if as_json:
         ranking = comparison.ranking
         print_json(

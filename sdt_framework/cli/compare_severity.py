@@ -13,8 +13,14 @@ from .common import console, print_table
 __all__ = ["check_zones", "print_severity", "severity_agreement", "severity_json"]
 
 
-def severity_agreement(folder: Any, zones: list[str] | None, seed: int = 0) -> tuple[Any, str]:
-    """The zone agreement of ``folder`` (None and the reason when it cannot be computed)."""
+def severity_agreement(
+    folder: Any, zones: list[str] | None, reference: str, seed: int = 0
+) -> tuple[Any, str]:
+    """Zone agreement of ``folder``'s sensors with ``reference`` (the comparison's baseline).
+
+    None and the reason when it cannot be computed (no features, no table, no
+    windows of ``reference``); a bad ``--zones`` value is an error.
+    """
     from ..severity import assign_tables, zone_agreement
 
     features = folder.features
@@ -23,7 +29,9 @@ def severity_agreement(folder: Any, zones: list[str] | None, seed: int = 0) -> t
     assignments = assign_tables(sorted(features["machine"].unique()), zones or [])
     if not assignments:
         return None, "no zone table for these machines; give --zones TABLE or MACHINE=TABLE"
-    return zone_agreement(features, folder.reference, assignments, seed=seed), ""
+    if not (features["sensor"] == reference).any():
+        return None, f"features.parquet has no windows of {reference!r} to grade against"
+    return zone_agreement(features, reference, assignments, seed=seed), ""
 
 
 def _pct(value: float) -> str:
