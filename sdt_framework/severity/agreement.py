@@ -76,10 +76,12 @@ def paired_zones(
     ref = ref[[*_WINDOW, "condition", "severity", "V_RMS"]].rename(columns={"V_RMS": "v_ref"})
     others = frame[frame["sensor"] != reference][[*_WINDOW, "sensor", "V_RMS"]]
     pairs = others.merge(ref, on=_WINDOW, how="inner").rename(columns={"V_RMS": "v_sensor"})
-    cuts = np.stack([assignments[m].table.cuts for m in pairs["machine"]]) if len(pairs) else None
-    for side in ("ref", "sensor"):
+    order = list(assignments)
+    table_cuts = np.stack([assignments[m].table.cuts for m in order])
+    cuts = table_cuts[pairs["machine"].map({m: i for i, m in enumerate(order)}).to_numpy(int)]
+    for side in ("ref", "sensor"):  # zone = number of boundaries below the value
         values = pairs[f"v_{side}"].to_numpy(float)
-        pairs[f"zone_{side}"] = (values[:, None] > cuts).sum(axis=1) if cuts is not None else 0
+        pairs[f"zone_{side}"] = (values[:, None] > cuts).sum(axis=1)
     pairs["healthy"] = pairs["severity"].isna().to_numpy()
     return pairs
 
