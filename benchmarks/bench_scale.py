@@ -151,6 +151,7 @@ def main() -> None:
     parser.add_argument("--full", action="store_true", help="also acquisitions = 20 (hours)")
     parser.add_argument("--jobs", type=int, default=2, help="local processes (default 2)")
     parser.add_argument("--dask-workers", type=int, default=4, help="Dask workers (default 4)")
+    parser.add_argument("--keep", type=Path, help="write the results folders here (kept)")
     parser.add_argument("--one", nargs=5, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.one:
@@ -166,11 +167,12 @@ def main() -> None:
     )
     engines = [("local", args.jobs, f"--jobs {args.jobs}"), ("dask", args.dask_workers, "")]
     with tempfile.TemporaryDirectory() as tmp:
+        root = args.keep or Path(tmp)
         for acquisitions in sizes:
             measured = []
             for engine, workers, label in engines:
                 label = label or f"dask x{workers}"
-                data = measure(acquisitions, engine, workers, Path(tmp))
+                data = measure(acquisitions, engine, workers, root)
                 print(line(label, acquisitions, workers, data)[0], flush=True)
                 measured.append(pd.read_parquet(data["results"]))
             same = measured[0].equals(measured[1])
