@@ -137,3 +137,24 @@ def test_worker_with_another_plugin_is_named(tmp_path):
         f"installed here; every worker needs the same software and data paths (docs/scale.md)"
     )
     assert ordinary != address
+
+
+def test_cache_no_worker_can_write_and_a_cluster_without_workers(read_only_dir):
+    from distributed import Client, LocalCluster
+
+    from sdt_framework.bench.workers import check_workers
+
+    cache = read_only_dir / "cache"
+    with (
+        LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None)
+        as cluster,
+        Client(cluster) as client,
+    ):  # fmt: skip
+        with pytest.raises(SDTError, match=f"cannot create the feature cache {cache} "):
+            check_workers(client, [], str(cache))
+        client.retire_workers(list(client.scheduler_info()["workers"]))
+        with pytest.raises(SDTError) as caught:
+            check_workers(client, [], "")
+    assert str(caught.value) == (
+        "the Dask cluster has no workers; start some or leave --scheduler out"
+    )
