@@ -26,6 +26,7 @@ Usage:
     .venv/bin/python benchmarks/bench_scale.py                   # acquisitions 1 and 5
     .venv/bin/python benchmarks/bench_scale.py --acquisitions 1  # one size only
     .venv/bin/python benchmarks/bench_scale.py --full            # 1, 5 and 20 (hours)
+    .venv/bin/python benchmarks/bench_scale.py --acquisitions 1 --repeats 2  # a loaded machine
 """
 
 from __future__ import annotations
@@ -75,7 +76,7 @@ class PeakMemory:
         self._thread.join()
 
 
-def one(acquisitions: int, engine: str, workers: int, out: Path, cache: Path) -> dict:
+def one(acquisitions: int, engine: str, workers: int, out: Path, cache: Path, repeats: int) -> dict:
     """Run the default protocol once in this process; return its measurements."""
     from sdt_framework.bench.config import load_config
     from sdt_framework.bench.output import write_outputs
@@ -89,6 +90,7 @@ def one(acquisitions: int, engine: str, workers: int, out: Path, cache: Path) ->
         "jobs": workers,
         "cache_dir": str(cache),
         **backend,
+        **({"repeats": repeats} if repeats else {}),
     }
     times: dict[str, float] = {}
     with PeakMemory() as memory:
@@ -114,12 +116,12 @@ def one(acquisitions: int, engine: str, workers: int, out: Path, cache: Path) ->
     }
 
 
-def measure(acquisitions: int, engine: str, workers: int, root: Path) -> dict:
+def measure(acquisitions: int, engine: str, workers: int, root: Path, repeats: int) -> dict:
     """:func:`one` in a fresh process (imports, pools and memory start from nothing)."""
     out = root / f"{engine}-{acquisitions}"
     cache = root / f"cache-{engine}-{acquisitions}"
     command = [sys.executable, __file__, "--one", engine, str(workers), str(acquisitions)]
-    command += [str(out), str(cache)]
+    command += [str(out), str(cache), str(repeats)]
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     data = json.loads((out / "bench_scale.json").read_text())
     data["results"] = out / "compare.parquet"
@@ -152,17 +154,21 @@ def main() -> None:
     parser.add_argument("--jobs", type=int, default=2, help="local processes (default 2)")
     parser.add_argument("--dask-workers", type=int, default=4, help="Dask workers (default 4)")
     parser.add_argument("--keep", type=Path, help="write the results folders here (kept)")
-    parser.add_argument("--one", nargs=5, help=argparse.SUPPRESS)
+    parser.add_argument(
+        "--repeats", type=int, default=0, help="repetitions (default: the protocol's 10)"
+    )
+    parser.add_argument("--one", nargs=6, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.one:
-        engine, workers, acquisitions, out, cache = args.one
-        data = one(int(acquisitions), engine, int(workers), Path(out), Path(cache))
+        engine, workers, acquisitions, out, cache, repeats = args.one
+        data = one(int(acquisitions), engine, int(workers), Path(out), Path(cache), int(repeats))
         (Path(out) / "bench_scale.json").write_text(json.dumps(data))
         return
     sizes = args.acquisitions or ([1, 5, 20] if args.full else [1, 5])
     print(
         f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
-        f"python {platform.python_version()}; load average {os.getloadavg()[0]:.1f}",
+        f"python {platform.python_version()}; load average {os.getloadavg()[0]:.1f}; "
+        f"repeats {args.repeats or 10}",
         flush=True,
     )
     engines = [("local", args.jobs, f"--jobs {args.jobs}"), ("dask", args.dask_workers, "")]
@@ -172,7 +178,7 @@ def main() -> None:
             measured = []
             for engine, workers, label in engines:
                 label = label or f"dask x{workers}"
-                data = measure(acquisitions, engine, workers, root)
+                data = measure(acquisitions, engine, workers, root, args.repeats)
                 print(line(label, acquisitions, workers, data)[0], flush=True)
                 measured.append(pd.read_parquet(data["results"]))
             same = measured[0].equals(measured[1])
