@@ -158,9 +158,16 @@ def _render(draw: Draw, args: tuple, path: Path) -> tuple[str, str]:
         return "failed", f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
 
 
+#: fewer cores than this draw in this process: on 2 cores shared with other work, starting
+#: the worker processes and their imports cost more than they saved (report 47.8 s side by
+#: side vs 28.9 s one after another, benchmarks/bench_scale.py's folder, load average 27)
+PARALLEL_FROM_CORES = 4
+
+
 def _processes(count: int) -> int:
     """Processes to draw ``count`` figures with (1: in this process)."""
-    return max(1, min(count, os.cpu_count() or 1))
+    cores = os.cpu_count() or 1
+    return 1 if cores < PARALLEL_FROM_CORES else max(1, min(count, cores))
 
 
 def draw_figures(
@@ -173,8 +180,9 @@ def draw_figures(
     """Draw each figure into ``out_dir`` (PNG) and return the report blocks for them.
 
     ``captions`` gives, per figure key, the fixed explanation of what it shows.
-    Each figure's inputs are gathered here; the figures are drawn side by side
-    in worker processes (one per figure, at most one per core), so the report
+    Each figure's inputs are gathered here; on a machine with at least
+    :data:`PARALLEL_FROM_CORES` cores the figures are drawn side by side in
+    worker processes (one per figure, at most one per core), so the report
     waits for the slowest figure (the t-SNE) rather than for all of them.
     """
     blocks: dict[str, list[Block]] = {}
