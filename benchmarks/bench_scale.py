@@ -154,6 +154,7 @@ def main() -> None:
     parser.add_argument("--jobs", type=int, default=2, help="local processes (default 2)")
     parser.add_argument("--dask-workers", type=int, default=4, help="Dask workers (default 4)")
     parser.add_argument("--keep", type=Path, help="write the results folders here (kept)")
+    parser.add_argument("--only", choices=["local", "dask"], help="measure one engine only")
     parser.add_argument(
         "--repeats", type=int, default=0, help="repetitions (default: the protocol's 10)"
     )
@@ -172,6 +173,7 @@ def main() -> None:
         flush=True,
     )
     engines = [("local", args.jobs, f"--jobs {args.jobs}"), ("dask", args.dask_workers, "")]
+    engines = [e for e in engines if args.only in (None, e[0])]
     with tempfile.TemporaryDirectory() as tmp:
         root = args.keep or Path(tmp)
         for acquisitions in sizes:
@@ -181,6 +183,8 @@ def main() -> None:
                 data = measure(acquisitions, engine, workers, root, args.repeats)
                 print(line(label, acquisitions, workers, data)[0], flush=True)
                 measured.append(pd.read_parquet(data["results"]))
+            if len(measured) < 2:
+                continue
             same = measured[0].equals(measured[1])
             print(
                 f"acq {acquisitions:>2} identical results (--jobs {args.jobs} vs dask "
