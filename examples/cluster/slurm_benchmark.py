@@ -48,7 +48,7 @@ def main() -> int:
     cluster.scale(jobs=args.nodes)
     try:
         with cluster.get_client() as client:
-            client.wait_for_workers(args.cores)  # the first node; the others join as they start
+            client.wait_for_workers(args.nodes * args.cores)  # all: only those present are checked
             command = ["sdt", "benchmark", *options, "--backend", "dask"]
             command += ["--scheduler", cluster.scheduler_address]
             return subprocess.run(command, check=False).returncode
