@@ -8,7 +8,8 @@ itself, see :mod:`~sdt_framework.bench.classify`, so results never depend on
 the engine).
 
 A Dask scheduler address is checked before connecting: a malformed one, or
-one that cannot be reached, is one clear error, never a traceback.
+one that cannot be reached, is one clear error, never a traceback. Once
+connected, every worker is checked (:mod:`.workers`) before any task is sent.
 
 Ctrl-C belongs to the main process. A terminal delivers SIGINT to every
 process of the foreground group, workers included; local workers therefore
@@ -38,6 +39,7 @@ from typing import Any, Protocol
 from joblib import Parallel, delayed, parallel_config
 
 from ..errors import SDTError
+from .workers import check_workers
 
 __all__ = [
     "DaskExecutor",
@@ -106,7 +108,8 @@ def _ignore_sigint_in_worker() -> None:
 
 
 class LocalExecutor:
-    """joblib processes on this machine (``jobs == 1`` runs in-process)."""
+    """joblib processes on this machine (``jobs == 1`` runs in-process); joblib dispatches
+    the items in the order given."""
 
     def __init__(self, jobs: int) -> None:
         self.jobs = jobs
@@ -124,7 +127,8 @@ class LocalExecutor:
 
 
 class DaskExecutor:
-    """Tasks submitted to a ``distributed`` scheduler (a real cluster or a LocalCluster)."""
+    """Tasks submitted to a ``distributed`` scheduler (a real cluster or a LocalCluster),
+    started in the order given (the caller puts the longest first, :mod:`.schedule`)."""
 
     def __init__(self, client: Any) -> None:
         self.client = client
@@ -132,7 +136,13 @@ class DaskExecutor:
     def map_unordered(self, fn: Callable[[Any], Any], items: Iterable[Any]) -> Iterator[Any]:
         from distributed import as_completed
 
-        futures = self.client.map(fn, list(items), pure=False)
+        items = list(items)
+        # The scheduler orders tasks of equal priority by its own graph order, not by
+        # submission: each task's priority is its place in ``items`` (first = highest).
+        futures = [
+            self.client.submit(fn, item, pure=False, priority=len(items) - i)
+            for i, item in enumerate(items)
+        ]
         for future in as_completed(futures):
             yield future.result()
 
@@ -164,8 +174,19 @@ def check_scheduler_address(address: str) -> None:
 
 
 @contextlib.contextmanager
-def open_executor(backend: str, jobs: int, scheduler: str | None) -> Iterator[Executor]:
-    """The executor for ``backend``; for Dask, connect to ``scheduler`` or start a local one."""
+def open_executor(
+    backend: str,
+    jobs: int,
+    scheduler: str | None,
+    sources: Iterable[str] = (),
+    cache_dir: str = "",
+) -> Iterator[Executor]:
+    """The executor for ``backend``; for Dask, connect to ``scheduler`` or start a local one.
+
+    A Dask cluster's workers are checked before it is returned
+    (:func:`~.workers.check_workers`: same software, every data file in ``sources``
+    readable, ``cache_dir`` writable); a worker that differs is an ``SDTError``.
+    """
     if backend == "local":
         yield LocalExecutor(jobs)
         return
@@ -182,6 +203,7 @@ def open_executor(backend: str, jobs: int, scheduler: str | None) -> Iterator[Ex
                 f"`dask scheduler` or leave --scheduler out for a local cluster"
             ) from None
         with client:
+            check_workers(client, sources, cache_dir)
             yield DaskExecutor(client)
         return
     with (
@@ -194,4 +216,5 @@ def open_executor(backend: str, jobs: int, scheduler: str | None) -> Iterator[Ex
         Client(cluster) as client,
     ):
         client.run(_ignore_sigint_in_worker)
+        check_workers(client, sources, cache_dir)
         yield DaskExecutor(client)

@@ -25,6 +25,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import time
 import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -68,6 +69,7 @@ class RecordingFeatures:
 
     blocks: list[FeatureBlock] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    seconds: float = 0.0  # time the worker spent on the recording (for bench_scale's ideal)
 
 
 @dataclass(frozen=True)
@@ -215,6 +217,7 @@ def _by_prefix(job: FeatureJob) -> list[list[tuple[SensorSpec, int]]]:
 
 def featurise_recording(job: FeatureJob) -> RecordingFeatures:
     """Features of one recording for every (sensor, unit, repetition) of the job."""
+    start = time.perf_counter()
     shared: SharedPrefix | None = None  # the recording, read on first need
     out = RecordingFeatures()
     blocks = out.blocks
@@ -273,6 +276,7 @@ def featurise_recording(job: FeatureJob) -> RecordingFeatures:
         same = {n.name for n in job.sensors if not has_tolerances(n)}
         firsts = [b for b in blocks if b.unit == 0 and b.sensor in same]
         blocks += [_relabel(b, b.repeat, u, "shared") for u in range(1, job.units) for b in firsts]
+    out.seconds = time.perf_counter() - start
     return out
 
 

@@ -35,6 +35,13 @@ from .folder import claim_results_folder
 from .folder_lock import holds_results_folder, unlock_results_folder
 from .plan import Plan, plan_benchmark
 from .saturation import saturation_table
+from .schedule import (
+    learn_factors,
+    longest_first,
+    read_factors,
+    recordings_longest_first,
+    write_factors,
+)
 from .store import load_finished, store_finished
 from .tasks import plan_tasks
 
@@ -62,6 +69,8 @@ class BenchmarkResult:
     seconds: dict[str, float] = field(default_factory=dict)
     saturation: pd.DataFrame | None = None  # samples at full scale per (sensor, recording)
     cache_dir: str = ""  # the feature cache used (this machine's)
+    #: per phase, the time the workers spent in its tasks, summed (wall x workers at best)
+    task_seconds: dict[str, float] = field(default_factory=dict)
 
 
 def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
@@ -184,13 +193,19 @@ def _run(
         )
         for r in plan.recordings
     ]
+    jobs = recordings_longest_first(jobs)  # results are re-ordered by plan below
     seconds: dict[str, float] = {}
-    with open_executor(config.backend, config.n_jobs(), config.scheduler) as executor:
+    task_seconds = {"features": 0.0, "classify": 0.0}
+    sources = [r.source for r in plan.recordings]
+    with open_executor(
+        config.backend, config.n_jobs(), config.scheduler, sources, str(cache_dir)
+    ) as executor:
         start = time.perf_counter()
         blocks: list[FeatureBlock] = []
         report("features", 0, len(jobs))
         for i, result in enumerate(executor.map_unordered(featurise_recording, jobs), 1):
             blocks.extend(result.blocks)
+            task_seconds["features"] += result.seconds
             for note in result.notes:
                 warn(note)
             report("features", i, len(jobs))
@@ -202,13 +217,18 @@ def _run(
         planned = list(plan_tasks(plan, features, set(previous)))
         todo = [task for _, task in planned if task is not None]
         finished = {key: previous[key] for key, task in planned if task is None}
+        factors = {**read_factors(cache_dir), **learn_factors(previous.values())}
         report("runs", len(finished), len(planned))
-        for result in executor.map_unordered(run_classifier, todo):
+        computed: list[RunResult] = []
+        for result in executor.map_unordered(run_classifier, longest_first(todo, factors)):
             if result.status == "ok":
                 store_finished(runs_dir, result)
             finished[result.key] = result
+            computed.append(result)
+            task_seconds["classify"] += result.fit_seconds
             report("runs", len(finished), len(planned))
         seconds["classify"] = time.perf_counter() - start
+        write_factors(cache_dir, learn_factors(computed))
     return BenchmarkResult(
         plan,
         [finished[key] for key, _ in planned],
@@ -220,4 +240,5 @@ def _run(
         seconds=seconds,
         saturation=saturation_table(blocks, {s.name: s.full_scale_g for s in plan.sensors}),
         cache_dir=os.path.abspath(cache_dir),
+        task_seconds=task_seconds,
     )
