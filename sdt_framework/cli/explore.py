@@ -16,6 +16,8 @@ from .common import console, err_console, registry, table
 
 if TYPE_CHECKING:
     from ..bench.estimate import Estimate
+    from ..bench.plan import Plan
+    from ..specs import SensorSpec
 
 
 def _example() -> str:
@@ -148,8 +150,9 @@ def _run(
 ) -> dict[str, Any]:
     """Plan the sweep, estimate both strategies, check the folder, run the chosen one, report."""
     from ..bench.estimate import estimate
+    from ..explore.adaptive import screen_of
     from ..explore.run import plan_explore
-    from ..explore.size import run_estimate
+    from ..explore.size import run_estimate, sweep_estimate
     from .explore_run import adaptive
     from .explore_run import exhaustive as run_exhaustive
     from .planned import check_estimate, print_skipped, stored_runs
@@ -158,11 +161,20 @@ def _run(
     reg = registry(ctx)
     stored = stored_runs(out_dir)
 
-    def check_design(points: int, size: Estimate) -> None:
-        """Before the design is built: its points costed from the sweep file alone."""
+    def check_design(points: int, probe: Plan, base: SensorSpec) -> None:
+        """Before the design is built: its points costed from the sweep file alone.
+
+        An adaptive sweep screens every point, so the screen alone is checked
+        here; its refinement is added once the design shows its lines.
+        """
         what = f"sweep of {points:,} design points"
-        long_ok = yes or strategy != "exhaustive"  # the adaptive estimate is checked below
-        check_estimate(size.after(stored), out_dir, long_ok, what, REDUCE, verb="run")
+        if strategy == "adaptive" or (strategy == "auto" and sweep.design == "grid"):
+            size = sweep_estimate(screen_of(probe, reg), base, points)
+            check_estimate(size, out_dir, True, what, REDUCE)  # memory and disk
+            what = f"{what} (its screen alone)"
+        else:
+            size = sweep_estimate(probe, base, points).after(stored)
+        check_estimate(size, out_dir, yes, what, REDUCE, verb="run")
 
     explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where, check=check_design)
     plan = explore_plan.plan

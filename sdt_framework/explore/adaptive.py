@@ -54,6 +54,7 @@ __all__ = [
     "budget",
     "not_adaptive",
     "point_table",
+    "screen_of",
     "screen_plan",
 ]
 
@@ -116,10 +117,15 @@ def budget(explore: ExplorePlan) -> tuple[int, int]:
 
 def screen_plan(explore: ExplorePlan, registry: Registry) -> ExplorePlan:
     """The same points under the screen protocol: cheap classifiers, one repetition, no report."""
-    config = explore.plan.config.model_copy(
+    return replace(explore, plan=screen_of(explore.plan, registry))
+
+
+def screen_of(plan: Plan, registry: Registry) -> Plan:
+    """``plan``'s data, sensors and options with the screen's classifiers and one repetition."""
+    config = plan.config.model_copy(
         update={"classifiers": list(SCREEN_CLASSIFIERS), "repeats": 1, "report": False}
     )
-    return replace(explore, plan=plan_benchmark(config, registry))
+    return plan_benchmark(config, registry)
 
 
 @dataclass

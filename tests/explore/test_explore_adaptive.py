@@ -159,3 +159,26 @@ def test_adaptive_where_it_cannot_answer_is_one_line_before_any_work(tmp_path, s
     assert len(lines) == 1 and lines[0].startswith("error: --strategy adaptive"), lines
     assert message in lines[0] and "--strategy exhaustive" in lines[0]
     assert not out.exists()
+
+
+def test_a_long_adaptive_sweep_needs_yes_before_its_design_is_built(
+    sdt_main, tmp_path, monkeypatch
+):
+    """The screen runs every point, so it alone is costed and refused before the design exists."""
+
+    def refuse(sweep):
+        pytest.fail("the design was built before its size was checked")
+
+    monkeypatch.setattr("sdt_framework.explore.run.design_points", refuse)
+    monkeypatch.setattr("sdt_framework.bench.estimate.CONFIRM_ABOVE_SECONDS", 0.0)
+    path = tmp_path / "sweep.toml"
+    path.write_text(
+        '[sweep]\nbase = "adxl345"\n[sweep.axes]\nnoise_density_ug_rthz = { levels = [90, 290] }\n'
+        '[benchmark]\nmachines = ["Motor-2"]\n'
+    )
+    out = tmp_path / "out"
+    code, _, err = sdt_main("explore", str(path), "--quick", "--out", str(out))
+    assert code == 2 and err.count("\n") == 1 and not out.exists()
+    # 2 points + reference and base, screened: 3 scenarios x 2 classifiers x 1 repetition
+    assert err.startswith("error: this sweep of 2 design points (its screen alone) is 24 runs and ")
+    assert "add --yes to run it" in err
