@@ -5,7 +5,6 @@ from __future__ import annotations
 import datetime as dt
 import shlex
 import sys
-from dataclasses import replace
 from importlib import resources
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -204,47 +203,20 @@ def _choose(
     explore_plan: Any, reg: Any, strategy: str, exhaustive: Estimate, report: bool
 ) -> tuple[str, Estimate]:
     """Print both strategies' estimates and which one runs (and why); return it and its size."""
-    from ..bench.estimate import format_duration
     from ..errors import SDTError
-    from ..explore.adaptive import SCREEN_CLASSIFIERS, budget, not_adaptive, screen_plan
-    from ..explore.size import adaptive_estimate
+    from ..explore.adaptive import estimates, not_adaptive
 
-    n = len(explore_plan.points)
-    console.print(
-        f"exhaustive: full protocol on {n} points: {exhaustive.line()}",
-        highlight=False,
-        soft_wrap=True,
-    )
     reason = not_adaptive(explore_plan)
-    if reason is not None:
-        if strategy == "adaptive":
-            raise SDTError(f"--strategy adaptive: {reason}")
-        console.print(f"adaptive: does not apply ({reason})", highlight=False, soft_wrap=True)
+    if reason is not None and strategy == "adaptive":
+        raise SDTError(f"--strategy adaptive: {reason}")
+    lines, adaptive = estimates(explore_plan, reg, exhaustive, report)
+    for line in lines:
+        console.print(line, highlight=False, soft_wrap=True)
+    if adaptive is None:
         console.print("strategy: exhaustive", highlight=False)
         return "exhaustive", exhaustive
-    points, rounds = budget(explore_plan)
-    screen, refine = adaptive_estimate(
-        screen_plan(explore_plan, reg).plan,
-        explore_plan.plan,
-        explore_plan.base,
-        points,
-        rounds,
-        report,
-    )
-    total = screen.seconds + refine.seconds
-    console.print(
-        f"adaptive: screen of {n} points ({' and '.join(SCREEN_CLASSIFIERS)}, 1 repetition) "
-        f"{format_duration(screen.seconds)} + full protocol on at most {points} points in at "
-        f"most {rounds} rounds {format_duration(refine.seconds)}: at most "
-        f"{format_duration(total)} on {screen.workers} process"
-        f"{'es' if screen.workers > 1 else ''}",
-        highlight=False,
-        soft_wrap=True,
-    )
     chosen = "exhaustive" if strategy == "exhaustive" else "adaptive"
     console.print(f"strategy: {chosen}", highlight=False)
     if chosen == "exhaustive":
         return chosen, exhaustive
-    return chosen, replace(
-        refine, seconds=total, memory_bytes=max(screen.memory_bytes, refine.memory_bytes)
-    )
+    return chosen, adaptive

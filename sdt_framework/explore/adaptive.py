@@ -33,6 +33,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ..bench.estimate import Estimate, format_duration
 from ..bench.folder_lock import unlock_results_folder
 from ..bench.output import write_outputs
 from ..bench.plan import Plan, plan_benchmark
@@ -46,12 +47,14 @@ from .output import write_explore
 from .pareto import demands
 from .refine import Line, lines, next_groups, screen_groups
 from .run import ExplorePlan, explore_table
+from .size import adaptive_estimate
 
 __all__ = [
     "ADAPTIVE_ENTRIES",
     "SCREEN_CLASSIFIERS",
     "Adaptive",
     "budget",
+    "estimates",
     "not_adaptive",
     "point_table",
     "screen_of",
@@ -113,6 +116,35 @@ def budget(explore: ExplorePlan) -> tuple[int, int]:
     names = {p for line in by_field.values() for group in line.groups for p in group}
     widest = max((len(line.groups) for line in by_field.values()), default=0)
     return len(names), 1 + math.ceil(math.log2(widest + 1))
+
+
+def estimates(
+    explore: ExplorePlan, registry: Registry, exhaustive: Estimate, report: bool
+) -> tuple[list[str], Estimate | None]:
+    """Both strategies' estimates as printed lines, and the adaptive one (None: not applicable).
+
+    ``exhaustive`` is the full protocol on every point (with what the run
+    adds: :func:`~sdt_framework.explore.size.run_estimate`). The adaptive one
+    is its screen plus its refinement at most (:func:`budget` points and rounds).
+    """
+    n = len(explore.points)
+    lines = [f"exhaustive: full protocol on {n} points: {exhaustive.line()}"]
+    reason = not_adaptive(explore)
+    if reason is not None:
+        return [*lines, f"adaptive: does not apply ({reason})"], None
+    points, rounds = budget(explore)
+    screen = screen_plan(explore, registry).plan
+    first, refine = adaptive_estimate(screen, explore.plan, explore.base, points, rounds, report)
+    total = first.seconds + refine.seconds
+    workers = f"{first.workers} process{'es' if first.workers > 1 else ''}"
+    lines.append(
+        f"adaptive: screen of {n} points ({' and '.join(SCREEN_CLASSIFIERS)}, 1 repetition) "
+        f"{format_duration(first.seconds)} + full protocol on at most {points} points in at "
+        f"most {rounds} rounds {format_duration(refine.seconds)}: at most "
+        f"{format_duration(total)} on {workers}"
+    )
+    memory = max(first.memory_bytes, refine.memory_bytes)
+    return lines, replace(refine, seconds=total, memory_bytes=memory)
 
 
 def screen_plan(explore: ExplorePlan, registry: Registry) -> ExplorePlan:
