@@ -106,9 +106,9 @@ def explore(
     from ..inputs import require_regular_file
 
     if strategy not in STRATEGIES:
-        raise typer.BadParameter(
-            f"{strategy!r} is not one of {', '.join(STRATEGIES)}", param_hint="--strategy"
-        )
+        from ..errors import SDTError
+
+        raise SDTError(f"--strategy {strategy}: choose one of {', '.join(STRATEGIES)}")
     require_regular_file(sweep_file, "sweep file")
     with building(f"reading the sweep file {sweep_file}", "shorten its ties and levels"):
         sweep, protocol = load_sweep(sweep_file)
@@ -181,6 +181,10 @@ def _run(
     exhaustive = run_estimate(plan, estimate(plan, stored_runs=stored), report)
     chosen, size = _choose(explore_plan, reg, strategy, exhaustive, report)
     check_estimate(size, out_dir, yes, f"{chosen} sweep", REDUCE, verb="run")
+    if chosen == "adaptive":
+        from ..explore.adaptive import Adaptive
+
+        Adaptive(explore_plan, reg, out_dir).check_folder()  # before anything is written
     for row in explore_plan.skipped.itertuples():
         err_console.print(f"skipped point {row.point}: {row.reason}", highlight=False)
     print_skipped(plan, shown=set(explore_plan.skipped["point"]))

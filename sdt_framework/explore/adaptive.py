@@ -43,7 +43,7 @@ from ..errors import SDTError
 from ..registry import Registry
 from .effects import with_best
 from .objectives import verdicts
-from .output import write_explore
+from .output import write_explore, write_sweep_file
 from .pareto import demands
 from .refine import Line, lines, next_groups, screen_groups
 from .run import ExplorePlan, explore_table
@@ -65,7 +65,7 @@ __all__ = [
 SCREEN_CLASSIFIERS = ("lr", "knn")
 #: what an adaptive sweep's folder holds (anything else there is not ours)
 ADAPTIVE_ENTRIES = frozenset(
-    {"screen", "rounds", "full", "min_spec.csv", "sensitivity.csv", "refinement.csv"}
+    {"screen", "rounds", "full", "min_spec.csv", "sensitivity.csv", "refinement.csv", "sweep.toml"}
 )
 #: left by a write cut short (io.atomic_path, the link's temporary name)
 _TEMPORARY = re.compile(r"^\..+\.tmp$")
@@ -192,7 +192,9 @@ class Adaptive:
         self.check_folder()
         screen = screen_plan(self.explore, self.registry)
         screen_table = explore_table(screen, self._benchmark(screen.plan, self.out / "screen"))
-        screened = write_explore(screen, screen_table, self.out / "screen", fidelity="screen")
+        screened = write_explore(
+            screen, screen_table, self.out / "screen", fidelity="screen", sweep_file=False
+        )
         fields = list(self.explore.sweep.axes)
         demand = demands(self.explore.sweep, self.explore.stage_axes)
         by_field = lines(screened["points"], fields, self.explore.base_values(), demand)
@@ -218,8 +220,9 @@ class Adaptive:
                 "no line through the base has a valid point to refine; use --strategy exhaustive"
             )
         tables = write_explore(
-            full, table, folder, fidelity="full", sensitivity=screened["sensitivity"]
+            full, table, folder, "full", screened["sensitivity"], sweep_file=False
         )
+        write_sweep_file(self.explore, self.out)
         _link(self.out / "full", folder)
         tables["refinement"] = pd.DataFrame(
             log, columns=["round", "parameter", "level", "point", "why"]

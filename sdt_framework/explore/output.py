@@ -33,7 +33,7 @@ from .pareto import demands, point_costs, with_front
 from .run import ExplorePlan
 from .sensitivity import sensitivity as ranking
 
-__all__ = ["ANALYSES", "EXPLORE_FILES", "write_explore"]
+__all__ = ["ANALYSES", "EXPLORE_FILES", "write_explore", "write_sweep_file"]
 
 #: the tables that answer a question, each with the fidelity it rests on
 ANALYSES = ("main_effects", "sensitivity", "min_spec", "min_spec_points", "pareto")
@@ -52,6 +52,7 @@ def write_explore(
     out_dir: str | Path,
     fidelity: str = "full",
     sensitivity: pd.DataFrame | None = None,
+    sweep_file: bool = True,
 ) -> dict[str, pd.DataFrame]:
     """Analyse the exploration table and write every file; return the tables by name.
 
@@ -60,6 +61,8 @@ def write_explore(
     repetition). ``sensitivity``, when given, is written instead of the one
     computed here (the adaptive strategy's full-protocol points are not a
     balanced grid, so its ranking is the screen's, marked as such).
+    ``sweep_file`` False leaves ``sweep.toml`` out (the adaptive strategy
+    writes it once, at the top of its folder).
     """
     out = Path(out_dir)
     sweep = explore.sweep
@@ -90,6 +93,14 @@ def write_explore(
     write_frame(table, out / "explore.parquet")
     for name, frame in tables.items():
         write_frame(frame, out / f"{name}.csv")
+    if sweep_file:
+        write_sweep_file(explore, out)
+    return tables
+
+
+def write_sweep_file(explore: ExplorePlan, out: Path) -> None:
+    """``out/sweep.toml``: the sweep and its protocol as run, paths relative to ``out``."""
+    sweep = explore.sweep
     atomic_write_text(
         out / "sweep.toml",
         "# The sweep as run by sdt explore; re-run or resume: sdt explore sweep.toml --out .\n"
@@ -101,7 +112,6 @@ def write_explore(
             }
         ),
     )
-    return tables
 
 
 def _protocol(explore: ExplorePlan) -> dict:
