@@ -205,11 +205,12 @@ class Adaptive:
         done: set[str] = set()
         log: list[dict[str, object]] = []
         folder: Path | None = None
-        full, table = self.explore, None
+        full, table, round_no = self.explore, None, 0
         while new := _names(by_field, todo) - done:
-            log += _log(by_field, todo, len(log and {r["round"] for r in log}) + 1, why, done)
+            round_no += 1
+            log += _log(by_field, todo, round_no, why, done)
             done |= new
-            previous, folder = folder, self.out / "rounds" / str(log[-1]["round"])
+            previous, folder = folder, self.out / "rounds" / str(round_no)
             full = self._subset(done)
             table = explore_table(full, self._benchmark(full.plan, folder, previous))
             judged = verdicts(with_best(table), fields, target)
