@@ -27,9 +27,10 @@ def adaptive(explore_plan: Any, reg: Any, out_dir: Path, report: bool) -> dict[s
 
         write_report(out_dir / "full", registry=reg)
     rounds = tables["refinement"]
+    n_rounds = int(rounds["round"].max())
     console.print(
         f"screen: {len(explore_plan.points)} points in {out_dir / 'screen'}; full protocol: "
-        f"{rounds['point'].nunique()} points in {rounds['round'].max()} rounds in "
+        f"{rounds['point'].nunique()} points in {n_rounds} round{'s' if n_rounds > 1 else ''} in "
         f"{out_dir / 'full'}; answer in {out_dir}",
         highlight=False,
         soft_wrap=True,
