@@ -104,6 +104,7 @@ def points_per_hour() -> None:
         sweep.write_text(text)
         command = [sys.executable, "-m", "sdt_framework", "explore", str(sweep)]
         command += ["--out", str(Path(tmp) / "out"), "--no-report", "--yes"]
+        command += ["--strategy", "exhaustive"]  # every point through the full protocol
         env = {**os.environ, "SDT_CACHE_DIR": str(Path(tmp) / "cache")}
         start = time.perf_counter()
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL, env=env)

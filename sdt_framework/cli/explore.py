@@ -11,14 +11,24 @@ from typing import TYPE_CHECKING, Any
 
 import typer
 
-from .common import console, err_console, registry, table, warn
+from .common import console, err_console, registry, table
 
 if TYPE_CHECKING:
     from ..bench.estimate import Estimate
+    from ..bench.plan import Plan
+    from ..specs import SensorSpec
 
 
 def _example() -> str:
     return resources.files("sdt_framework.explore").joinpath("example_sweep.toml").read_text()
+
+
+STRATEGIES = ("auto", "adaptive", "exhaustive")
+#: what each fidelity means, in the printed titles
+FIDELITY = {
+    "full": "full protocol",
+    "screen": "screen: lr and knn, 1 repetition",
+}
 
 
 def _print_min_spec(min_spec: Any) -> None:
@@ -35,7 +45,8 @@ def _print_min_spec(min_spec: Any) -> None:
     ]
     bases = best.drop_duplicates("parameter").set_index("parameter")["base_level"]
     columns = [f"{p} (base {'absent' if bases[p] != bases[p] else f'{bases[p]:g}'})" for p in wide]
-    title = f"Minimum specification: {best['target'].iloc[0]} (best classifier)"
+    fidelity = FIDELITY[best["fidelity"].iloc[0]]
+    title = f"Minimum specification: {best['target'].iloc[0]} (best classifier; {fidelity})"
     table(title, ["machine", "scenario", *columns], rows)
 
 
@@ -55,18 +66,34 @@ def explore(
     yes: bool = typer.Option(False, "--yes", help="Run even if the estimate exceeds an hour."),
     example: bool = typer.Option(False, "--example", help="Print a commented starter sweep."),
     no_report: bool = typer.Option(False, "--no-report", help="Skip report.md/report.html."),
+    strategy: str = typer.Option(
+        "auto",
+        "--strategy",
+        help="adaptive: a cheap screen of every point, then the full protocol only where the "
+        "minimum specification is decided (bisection along each axis); exhaustive: the full "
+        "protocol on every point; auto (default): adaptive where it applies (a grid of "
+        "ordered axes through the base), else exhaustive.",
+    ),
 ) -> None:
     """Sweep sensor parameters around a base sensor and find the minimum specification.
 
-    Every design point runs the full `sdt benchmark` protocol; the folder gets
-    explore.parquet, points.csv, skipped_points.csv, main_effects.csv,
-    sensitivity.csv, min_spec.csv, pareto.csv and an Exploration report section.
+    Before it starts it prints the estimated time of both strategies.
+    Exhaustive: every design point runs the full `sdt benchmark` protocol; the
+    folder gets explore.parquet, points.csv, skipped_points.csv,
+    main_effects.csv, sensitivity.csv, min_spec.csv, pareto.csv and an
+    Exploration report section. Adaptive: screen/ (every point, lr and knn, one
+    repetition: the sensitivity ranking), rounds/<k> (the full protocol on the
+    levels around each threshold), full/ (the last round), and min_spec.csv,
+    sensitivity.csv and refinement.csv at the top; every table names the
+    fidelity it rests on.
 
     Example:
 
       sdt explore --example > my_sweep.toml
 
       sdt explore examples/sweeps/rate_noise.toml --quick --out results/rate-noise
+
+      sdt explore examples/sweeps/rate_noise.toml --strategy exhaustive --quick
     """
     if example:
         sys.stdout.write(_example())  # verbatim: no wrapping, no markup
@@ -78,6 +105,10 @@ def explore(
     from ..explore.sweep_file import load_sweep
     from ..inputs import require_regular_file
 
+    if strategy not in STRATEGIES:
+        from ..errors import SDTError
+
+        raise SDTError(f"--strategy {strategy}: choose one of {', '.join(STRATEGIES)}")
     require_regular_file(sweep_file, "sweep file")
     with building(f"reading the sweep file {sweep_file}", "shorten its ties and levels"):
         sweep, protocol = load_sweep(sweep_file)
@@ -87,9 +118,12 @@ def explore(
         overrides["quick"] = True
     out_dir = out or Path("results") / dt.datetime.now().strftime("explore-%Y%m%d-%H%M%S")
     resume = shlex.join(["sdt", "explore", str(sweep_file), "--out", str(out_dir)])
+    if strategy != "auto":
+        resume += f" --strategy {strategy}"
     with watch_interrupts(terminate=True) as watch:
         try:
-            tables = _run(ctx, sweep, protocol, overrides, str(sweep_file), out_dir, yes, no_report)
+            choices = (yes, no_report, strategy)
+            tables = _run(ctx, sweep, protocol, overrides, str(sweep_file), out_dir, choices)
         except (KeyboardInterrupt, Exception) as exc:
             if not isinstance(exc, KeyboardInterrupt) and not watch.seen:
                 raise  # not a pool broken by the same Ctrl-C or SIGTERM: a real error
@@ -111,56 +145,82 @@ def _run(
     overrides: dict[str, Any],
     where: str,
     out_dir: Path,
-    yes: bool,
-    no_report: bool,
+    choices: tuple[bool, bool, str],
 ) -> dict[str, Any]:
-    """Plan the sweep, check its size and the folder, run it, write and report."""
+    """Plan the sweep, estimate both strategies, check the folder, run the chosen one, report."""
     from ..bench.estimate import estimate
-    from ..bench.output import write_outputs
-    from ..bench.runner import preflight, run_benchmark
-    from ..data.sizes import building
-    from ..explore.output import write_explore
-    from ..explore.run import explore_table, plan_explore
-    from ..explore.size import assumptions, run_estimate
+    from ..explore.adaptive import screen_of
+    from ..explore.run import plan_explore
+    from ..explore.size import run_estimate, sweep_estimate
+    from .explore_run import adaptive
+    from .explore_run import exhaustive as run_exhaustive
     from .planned import check_estimate, print_skipped, stored_runs
-    from .progress import progress_bar
 
+    yes, no_report, strategy = choices
     reg = registry(ctx)
     stored = stored_runs(out_dir)
-    reduce = "shrink it (fewer levels or samples, --quick, fewer repeats or classifiers)"
 
-    def check_design(points: int, size: Estimate) -> None:
-        """Before the design is built: its points costed from the sweep file alone."""
+    def check_design(points: int, probe: Plan, base: SensorSpec) -> None:
+        """Before the design is built: its points costed from the sweep file alone.
+
+        An adaptive sweep screens every point, so the screen alone is checked
+        here; its refinement is added once the design shows its lines.
+        """
         what = f"sweep of {points:,} design points"
-        check_estimate(size.after(stored), out_dir, yes, what, reduce, verb="run")
+        if strategy == "adaptive" or (strategy == "auto" and sweep.design == "grid"):
+            size = sweep_estimate(screen_of(probe, reg), base, points)
+            check_estimate(size, out_dir, True, what, REDUCE)  # memory and disk
+            what = f"{what} (its screen alone)"
+        else:
+            size = sweep_estimate(probe, base, points).after(stored)
+        check_estimate(size, out_dir, yes, what, REDUCE, verb="run")
 
     explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where, check=check_design)
     plan = explore_plan.plan
     report = plan.config.report and not no_report
-    benchmark = estimate(plan, stored_runs=stored)
-    size = run_estimate(plan, benchmark, report)
-    check_estimate(size, out_dir, yes, "sweep", reduce, verb="run")
-    preflight(plan, out_dir)
+    exhaustive = run_estimate(plan, estimate(plan, stored_runs=stored), report)
+    chosen, size = _choose(explore_plan, reg, strategy, exhaustive, report)
+    check_estimate(size, out_dir, yes, f"{chosen} sweep", REDUCE, verb="run")
+    if chosen == "adaptive":
+        from ..explore.adaptive import Adaptive
+
+        Adaptive(explore_plan, reg, out_dir).check_folder()  # before anything is written
     for row in explore_plan.skipped.itertuples():
         err_console.print(f"skipped point {row.point}: {row.reason}", highlight=False)
     print_skipped(plan, shown=set(explore_plan.skipped["point"]))
     console.print(
         f"{len(explore_plan.points)} points ({len(explore_plan.skipped)} skipped) + reference "
-        f"and base on {len(plan.recordings)} recordings: {size.line()} -> {out_dir}",
+        f"and base on {len(plan.recordings)} recordings -> {out_dir}",
         highlight=False,
         soft_wrap=True,
     )
-    console.print(f"  ({assumptions(plan, benchmark, report)})", highlight=False, soft_wrap=True)
-    smaller = (
-        "use fewer points, repeats or classifiers, shorter or fewer recordings, or fewer --jobs"
-    )
-    with building(f"running the sweep ({size.line()})", smaller), progress_bar() as progress:
-        result = run_benchmark(plan, out_dir, progress, warn)
-        results = write_outputs(result, out_dir)
-        tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
-    if report:
-        from ..report import write_report
+    if chosen == "adaptive":
+        return adaptive(explore_plan, reg, out_dir, report)
+    return run_exhaustive(reg, explore_plan, out_dir, exhaustive, report)
 
-        write_report(out_dir, registry=reg)
-    console.print(f"{len(results)} runs; exploration in {out_dir}", highlight=False)
-    return tables
+
+#: what makes a sweep smaller, in the refusals
+REDUCE = "shrink it (fewer levels or samples, --quick, fewer repeats or classifiers)"
+
+
+def _choose(
+    explore_plan: Any, reg: Any, strategy: str, exhaustive: Estimate, report: bool
+) -> tuple[str, Estimate]:
+    """Print both strategies' estimates and which one runs (and why); return it and its size."""
+    from ..errors import SDTError
+    from ..explore.adaptive import estimates, not_adaptive
+
+    reason = not_adaptive(explore_plan)
+    if reason is not None and strategy == "adaptive":
+        raise SDTError(f"--strategy adaptive: {reason}")
+    lines, adaptive = estimates(explore_plan, reg, exhaustive, report)
+    for line in lines:
+        console.print(line, highlight=False, soft_wrap=True)
+    if adaptive is None:
+        console.print("strategy: exhaustive", highlight=False)
+        return "exhaustive", exhaustive
+    chosen = "exhaustive" if strategy == "exhaustive" else "adaptive"
+    console.print(f"strategy: {chosen}", highlight=False)
+    if chosen == "exhaustive":
+        return chosen, exhaustive
+    return chosen, adaptive

@@ -28,25 +28,11 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import pandas as pd
 
-from .effects import CELL, point_means
+from .effects import CELL
+from .objectives import thresholds, verdicts
 from .sweep import Target
 
 __all__ = ["meeting_points", "min_spec", "thresholds"]
-
-
-def thresholds(results: pd.DataFrame, target: Target) -> pd.Series:
-    """Macro-F1 each cell must reach, indexed by (machine, scenario, classifier)."""
-    cells = results.groupby(CELL, sort=True)["macro_f1"].size().index
-    if target.macro_f1 is not None:
-        return pd.Series(target.macro_f1, index=cells, name="threshold")
-    role = "base" if target.max_loss_to_base is not None else "reference"
-    reference = results[results["role"] == role].groupby(CELL, sort=True)["macro_f1"].mean()
-    reference = reference.reindex(cells)
-    if target.max_loss_to_base is not None:
-        return (reference - target.max_loss_to_base).rename("threshold")
-    if target.fraction_of_reference is not None:
-        return (reference * target.fraction_of_reference).rename("threshold")
-    return (reference - target.max_loss).rename("threshold")
 
 
 def _least_demanding(levels: np.ndarray, meets: np.ndarray, higher_is_harder: bool) -> float:
@@ -80,11 +66,10 @@ def min_spec(
     demand: Mapping[str, str],
 ) -> pd.DataFrame:
     """One row per cell and parameter: the minimum level meeting the target (NaN if none)."""
-    means = point_means(results[results["role"] == "point"], fields)
-    limit = thresholds(results, target)
+    judged = verdicts(results, fields, target)
     rows: list[dict[str, object]] = []
-    for cell, part in means.groupby(CELL, sort=True):
-        threshold = float(limit.get(cell, np.nan))
+    for cell, part in judged.groupby(CELL, sort=True):
+        threshold = float(part["threshold"].iloc[0])
         for field in fields:
             others = [f for f in fields if f != field]
             at_base = np.ones(len(part), dtype=bool)
@@ -101,7 +86,7 @@ def min_spec(
             else:
                 level = _least_demanding(
                     line[field].to_numpy(float),
-                    line["macro_f1"].to_numpy() >= threshold,
+                    line["meets"].to_numpy(bool),
                     demand[field] == "higher",
                 )
                 if len(line) and np.isnan(level):
@@ -124,7 +109,5 @@ def min_spec(
 
 def meeting_points(results: pd.DataFrame, fields: Sequence[str], target: Target) -> pd.DataFrame:
     """Every evaluated design point whose mean Macro-F1 meets the target, per cell."""
-    means = point_means(results[results["role"] == "point"], fields)
-    limit = thresholds(results, target)
-    joined = means.join(limit, on=CELL)
-    return joined[joined["macro_f1"] >= joined["threshold"]].reset_index(drop=True)
+    judged = verdicts(results, fields, target)
+    return judged[judged["meets"]].drop(columns="meets").reset_index(drop=True)

@@ -9,6 +9,7 @@ sensitivity.csv        ANOVA shares (grid) or SALib indices (morris/sobol/lhs), 
 min_spec.csv           least demanding level of each parameter meeting the target
 min_spec_points.csv    every evaluated point meeting the target
 pareto.csv             cost and mean Macro-F1 of every point, and whether it is on the front
+(each analysis table has a ``fidelity`` column: "full" or "screen")
 sweep.toml             the sweep as run (re-run or resume with ``sdt explore sweep.toml``)
 
 The benchmark's own files (results.csv, table4.md, ...) sit beside them, so
@@ -30,9 +31,12 @@ from .effects import main_effects, point_means, with_best
 from .minspec import meeting_points, min_spec
 from .pareto import demands, point_costs, with_front
 from .run import ExplorePlan
-from .sensitivity import sensitivity
+from .sensitivity import sensitivity as ranking
 
-__all__ = ["EXPLORE_FILES", "write_explore"]
+__all__ = ["ANALYSES", "EXPLORE_FILES", "write_explore", "write_sweep_file"]
+
+#: the tables that answer a question, each with the fidelity it rests on
+ANALYSES = ("main_effects", "sensitivity", "min_spec", "min_spec_points", "pareto")
 
 
 def _base_cost(explore: ExplorePlan) -> float:
@@ -43,9 +47,23 @@ def _base_cost(explore: ExplorePlan) -> float:
 
 
 def write_explore(
-    explore: ExplorePlan, table: pd.DataFrame, out_dir: str | Path
+    explore: ExplorePlan,
+    table: pd.DataFrame,
+    out_dir: str | Path,
+    fidelity: str = "full",
+    sensitivity: pd.DataFrame | None = None,
+    sweep_file: bool = True,
 ) -> dict[str, pd.DataFrame]:
-    """Analyse the exploration table and write every file; return the tables by name."""
+    """Analyse the exploration table and write every file; return the tables by name.
+
+    Every analysis table gets a ``fidelity`` column: "full" (the sweep's
+    protocol) or "screen" (the adaptive strategy's cheap classifiers on one
+    repetition). ``sensitivity``, when given, is written instead of the one
+    computed here (the adaptive strategy's full-protocol points are not a
+    balanced grid, so its ranking is the screen's, marked as such).
+    ``sweep_file`` False leaves ``sweep.toml`` out (the adaptive strategy
+    writes it once, at the top of its folder).
+    """
     out = Path(out_dir)
     sweep = explore.sweep
     fields = list(sweep.axes)
@@ -62,14 +80,27 @@ def write_explore(
         "points": points,
         "skipped_points": explore.skipped,
         "main_effects": main_effects(analysed, fields),
-        "sensitivity": sensitivity(analysed, sweep, len(explore.design)),
+        "sensitivity": (
+            ranking(analysed, sweep, len(explore.design)) if sensitivity is None else sensitivity
+        ),
         "min_spec": min_spec(analysed, fields, base_values, sweep.target, demand),
         "min_spec_points": meeting_points(analysed, fields, sweep.target),
         "pareto": pareto,
     }
+    for name in ANALYSES:
+        if "fidelity" not in tables[name]:
+            tables[name].insert(len(tables[name].columns), "fidelity", fidelity)
     write_frame(table, out / "explore.parquet")
     for name, frame in tables.items():
         write_frame(frame, out / f"{name}.csv")
+    if sweep_file:
+        write_sweep_file(explore, out)
+    return tables
+
+
+def write_sweep_file(explore: ExplorePlan, out: Path) -> None:
+    """``out/sweep.toml``: the sweep and its protocol as run, paths relative to ``out``."""
+    sweep = explore.sweep
     atomic_write_text(
         out / "sweep.toml",
         "# The sweep as run by sdt explore; re-run or resume: sdt explore sweep.toml --out .\n"
@@ -81,7 +112,6 @@ def write_explore(
             }
         ),
     )
-    return tables
 
 
 def _protocol(explore: ExplorePlan) -> dict:

@@ -19,7 +19,7 @@ from typing import Any
 import pandas as pd
 
 from ..bench.config import BenchmarkConfig, quick_preset, validate_config
-from ..bench.estimate import Estimate, unfit
+from ..bench.estimate import unfit
 from ..bench.plan import Plan, plan_benchmark
 from ..errors import SDTError
 from ..registry import Registry
@@ -71,15 +71,16 @@ def plan_explore(
     overrides: dict[str, Any],
     registry: Registry,
     where: str = "sweep",
-    check: Callable[[int, Estimate], None] | None = None,
+    check: Callable[[int, Plan, SensorSpec], None] | None = None,
 ) -> ExplorePlan:
     """Design, build and register the points, and plan the benchmark that evaluates them.
 
     ``protocol`` is the sweep file's ``[benchmark]`` table and ``overrides``
     the command-line options (``quick`` applies the quick preset under them).
-    Before the design is built, ``check`` is given its number of points and
-    the sweep's estimate (:mod:`~sdt_framework.explore.size`) and may refuse
-    it; by default a sweep that cannot fit in memory is refused.
+    Before the design is built, ``check`` is given its number of points, the
+    protocol planned on no points (its data, classifiers and options) and the
+    base sensor, to estimate the sweep (:mod:`~sdt_framework.explore.size`)
+    and refuse it; by default a sweep that cannot fit in memory is refused.
     """
     if "sensors" in protocol:
         raise SDTError(
@@ -93,7 +94,7 @@ def plan_explore(
         data = quick_preset(data)
     probe = plan_benchmark(_config(data, None, where), registry)  # the data and protocol
     n_points = design_size(sweep)
-    (check or _refuse_unfit)(n_points, sweep_estimate(probe, base, n_points))
+    (check or _refuse_unfit)(n_points, probe, base)
     design = design_points(sweep)
     repeated = repeated_point(sweep, design)
     if repeated is not None:
@@ -119,8 +120,8 @@ def plan_explore(
     return ExplorePlan(sweep, base, design, points, skipped, plan, stage_axes)
 
 
-def _refuse_unfit(points: int, size: Estimate) -> None:
-    problem = unfit(size)
+def _refuse_unfit(points: int, probe: Plan, base: SensorSpec) -> None:
+    problem = unfit(sweep_estimate(probe, base, points))
     if problem is not None:
         raise SDTError(f"a sweep of {points:,} design points {problem}; use fewer points")
 

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from ..bench.estimate import Estimate, estimate_like, format_duration
+from ..bench.estimate import Estimate, estimate, estimate_like, format_duration
 from ..bench.plan import Plan
 from ..data.sizes import SYNTH_SAMPLES_PER_S
 from ..specs import SensorSpec
@@ -44,6 +44,7 @@ __all__ = [
     "POINT_SECONDS",
     "REPORT_SECONDS",
     "START_SECONDS",
+    "adaptive_estimate",
     "assumptions",
     "design_size",
     "run_estimate",
@@ -114,3 +115,21 @@ def assumptions(plan: Plan, benchmark: Estimate, report: bool) -> str:
         f"estimate = {' + '.join(parts)}; it assumes a cold feature cache and an otherwise "
         f"idle machine (a loaded one takes longer)"
     )
+
+
+def adaptive_estimate(
+    screen: Plan, full: Plan, base: SensorSpec, points: int, rounds: int, report: bool
+) -> tuple[Estimate, Estimate]:
+    """The adaptive strategy's two parts: the screen, and the full protocol at most.
+
+    ``screen`` is the screen protocol on every point; ``full`` the sweep's
+    protocol (only its data and options are read), run on at most ``points``
+    line points plus the reference and base, costed as the base, in at most
+    ``rounds`` rounds, each of which reads the recordings and starts its
+    processes again (a round's earlier runs are copied, never redone).
+    """
+    first = run_estimate(screen, estimate(screen), report=False)
+    refine = estimate_like(full, base, points + 2)
+    extra = rounds * sum(_extra(full, refine, report=False).values())
+    extra += REPORT_SECONDS if report else 0.0
+    return first, replace(refine, seconds=refine.seconds + extra)

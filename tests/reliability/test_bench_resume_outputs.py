@@ -220,14 +220,18 @@ def test_stopped_and_resumed_equals_the_uninterrupted_run(clean, env, tmp_path, 
     assert_same_outputs(resumed, out, BENCH_TABLES, BENCH_TEXTS)
 
 
+#: the folder layout these tests compare is the exhaustive strategy's (one benchmark folder)
+EXHAUSTIVE = ["--strategy", "exhaustive"]
+
+
 def test_an_explore_folder_after_sigterm_and_resumes_equals_the_uninterrupted_one(env, tmp_path):
     sweep = tmp_path / "sweep.toml"
     sweep.write_text(SWEEP.format(cache=env["SDT_CACHE_DIR"]))
     out = tmp_path / "clean"
-    run([*SDT, "explore", str(sweep), "--out", str(out), "--no-report"], env)
+    run([*SDT, "explore", str(sweep), "--out", str(out), "--no-report", *EXHAUSTIVE], env)
 
     resumed = tmp_path / "resumed"
-    command = [*SDT, "explore", str(sweep), "--out", str(resumed), "--no-report"]
+    command = [*SDT, "explore", str(sweep), "--out", str(resumed), "--no-report", *EXHAUSTIVE]
     stop_then_resume(command, resumed, env, signal.SIGTERM)
     texts = ["table4.md", "config.toml", "sweep.toml"]
     assert_same_outputs(resumed, out, BENCH_TABLES + EXPLORE_TABLES, texts)

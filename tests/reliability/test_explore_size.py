@@ -86,7 +86,9 @@ def test_a_design_that_cannot_fit_is_refused_unbuilt(
 def test_a_long_design_needs_yes_before_it_is_built(sdt_main, tmp_path, no_design, monkeypatch):
     monkeypatch.setattr("sdt_framework.bench.estimate.CONFIRM_ABOVE_SECONDS", 0.0)
     out = tmp_path / "out"
-    code, _, err = sdt_main("explore", _file(tmp_path, SMALL), "--quick", "--out", str(out))
+    code, _, err = sdt_main(
+        "explore", _file(tmp_path, SMALL), "--quick", "--out", str(out), "--strategy", "exhaustive"
+    )
     assert code == 2 and err.count("\n") == 1
     # 2 points + reference and base, costed as the base: 3 scenarios x 5 classifiers x 2 repeats
     assert err.startswith("error: this sweep of 2 design points is 120 runs and ")

@@ -101,11 +101,28 @@ def test_an_exploration_writes_its_sweep_with_relative_paths(tmp_path):
         encoding="utf-8",
     )
     cache = tmp_path / "cache"
-    _sdt("explore", str(sweep), "--out", "explored", "--no-report", cwd=home, cache=cache)
+    exhaustive = ("--strategy", "exhaustive")  # the strategy whose folder holds sweep.toml
+    _sdt(
+        "explore",
+        str(sweep),
+        "--out",
+        "explored",
+        "--no-report",
+        *exhaustive,
+        cwd=home,
+        cache=cache,
+    )
     written = (home / "explored" / "sweep.toml").read_text(encoding="utf-8")
     assert str(tmp_path) not in written
     assert 'data = "../pump/manifest.csv"' in written
     again = _sdt(
-        "explore", "explored/sweep.toml", "--out", "explored", "--no-report", cwd=home, cache=cache
+        "explore",
+        "explored/sweep.toml",
+        "--out",
+        "explored",
+        "--no-report",
+        *exhaustive,
+        cwd=home,
+        cache=cache,
     )
     assert "runs (0 still to do)" in again.stdout, again.stdout

@@ -1,0 +1,72 @@
+"""Running ``sdt explore``'s two strategies once planned and estimated (see ``cli/explore.py``)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from .common import console, warn
+
+if TYPE_CHECKING:
+    from ..bench.estimate import Estimate
+
+__all__ = ["adaptive", "exhaustive"]
+
+
+def adaptive(explore_plan: Any, reg: Any, out_dir: Path, report: bool) -> dict[str, Any]:
+    """Screen every point, refine along the lines through the base, report the last round."""
+    from ..data.sizes import building
+    from ..explore.adaptive import Adaptive
+    from .progress import progress_bar
+
+    smaller = "use fewer points, repeats or classifiers, shorter or fewer recordings"
+    with building("running the adaptive sweep", smaller), progress_bar() as progress:
+        tables = Adaptive(explore_plan, reg, out_dir, progress, warn).run()
+    if report:
+        from ..report import write_report
+
+        write_report(out_dir / "full", registry=reg)
+    rounds = tables["refinement"]
+    n_rounds = int(rounds["round"].max())
+    console.print(
+        f"screen: {len(explore_plan.points)} points in {out_dir / 'screen'}; full protocol: "
+        f"{rounds['point'].nunique()} points in {n_rounds} round{'s' if n_rounds > 1 else ''} in "
+        f"{out_dir / 'full'}; answer in {out_dir}",
+        highlight=False,
+        soft_wrap=True,
+    )
+    return tables
+
+
+def exhaustive(
+    reg: Any, explore_plan: Any, out_dir: Path, size: Estimate, report: bool
+) -> dict[str, Any]:
+    """Every point through the full protocol in one benchmark folder."""
+    from ..bench.estimate import estimate
+    from ..bench.output import write_outputs
+    from ..bench.runner import preflight, run_benchmark
+    from ..data.sizes import building
+    from ..explore.output import write_explore
+    from ..explore.run import explore_table
+    from ..explore.size import assumptions
+    from .planned import stored_runs
+    from .progress import progress_bar
+
+    plan = explore_plan.plan
+    preflight(plan, out_dir)
+    console.print(f"  {size.line()}", highlight=False, soft_wrap=True)
+    benchmark = estimate(plan, stored_runs=stored_runs(out_dir))
+    console.print(f"  ({assumptions(plan, benchmark, report)})", highlight=False, soft_wrap=True)
+    smaller = (
+        "use fewer points, repeats or classifiers, shorter or fewer recordings, or fewer --jobs"
+    )
+    with building(f"running the sweep ({size.line()})", smaller), progress_bar() as progress:
+        result = run_benchmark(plan, out_dir, progress, warn)
+        results = write_outputs(result, out_dir)
+        tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
+    if report:
+        from ..report import write_report
+
+        write_report(out_dir, registry=reg)
+    console.print(f"{len(results)} runs; exploration in {out_dir}", highlight=False)
+    return tables
