@@ -131,7 +131,11 @@ def ratio_pairs(real: dict, synth: dict) -> list[tuple[tuple[str, str, str], flo
 
 
 def healthy_spread(seed: int) -> dict[tuple[str, str], tuple[float, float]]:
-    """(statistic, channel) -> (mean, SD) over every column of Motor-4 healthy 1 and 2."""
+    """(statistic, channel) -> (mean, SD) over every column of Motor-4 healthy 1 and 2.
+
+    Estimated as ``healthy_spread_motor4.csv`` is (its README): every 12 s column of
+    the two runs, glitched ones included, RMS not mean-removed, crest = peak / RMS.
+    """
     columns: dict[tuple[str, str], list[float]] = {}
     for level in (1, 2):
         signals = generate_run(
@@ -142,7 +146,8 @@ def healthy_spread(seed: int) -> dict[tuple[str, str], tuple[float, float]]:
             for column in x:
                 for stat, value in statistics(column).items():
                     columns.setdefault((stat, ch), []).append(value)
-    return {key: (float(np.mean(v)), float(np.std(v, ddof=1))) for key, v in columns.items()}
+    # SD as the real figure's: a StandardScaler's var_ (ddof 0), glitched columns kept
+    return {key: (float(np.mean(v)), float(np.std(v))) for key, v in columns.items()}
 
 
 def real_spread(path: Path = STATS_DIR / "healthy_spread_motor4.csv") -> dict:

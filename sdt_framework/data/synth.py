@@ -290,7 +290,7 @@ def generate_run(
                 mix.measured(machine, run),
             )
         if glitches:
-            mix.add_glitch(rng(seed, machine, run, "glitch", acq), out, acq)
+            mix.add_glitch(rng(seed, machine, run, "glitch", acq), out, acq, condition == "healthy")
     for x in out.values():
         np.clip(x, -m.FULL_SCALE_G, m.FULL_SCALE_G, out=x)
     return out

@@ -190,12 +190,22 @@ CHANNEL_DRIFT_SD = {"ch1": 0.0, "ch2": 0.011, "ch3": 0.032, "ch4": 0.087, "ch5":
                     "ch6": 0.0}  # fmt: skip
 #: common-mode glitches: 21 of the 575 real records carry them (the statistics' README);
 #: a glitch hits several channels of one column at once. Per-channel chance of being hit
-#: by an event: from healthy_spread_motor4.csv, whose crest-factor SD over 120 healthy
-#: columns is 3.4 and 2.4 on ch2 and ch3, 1.7-2.2 on ch4 and ch5 (their own knocks give
-#: most of that) and 0.56 on ch1 (almost never hit); the event rate then gives 21/575 per
-#: channel and column on average
+#: by an event in a fault run (healthy runs: GLITCH_HITS_HEALTHY), scaled on
+#: healthy_spread_motor4.csv, whose crest-factor SD over 120 healthy columns is 3.4 and 2.4
+#: on ch2 and ch3, 1.7-2.2 on ch4 and ch5 (their own knocks give most of that) and 0.56 on
+#: ch1 (almost never hit); the event rate then gives 21/575 per channel and column on
+#: average
 GLITCH_HITS = {"ch1": 0.05, "ch2": 0.5, "ch3": 0.5, "ch4": 0.2, "ch5": 0.2, "ch6": 0.05}
 GLITCH_EVENT = 21 / 575 * 5 / sum(v for k, v in GLITCH_HITS.items() if k != "ch6")
+#: in healthy runs the events hit ch2 and ch3 only. Over the 120 healthy Motor-4 columns
+#: (healthy_spread_motor4.csv) ch2 and ch3 carry the spikes (kurtosis SD 4.6 on ch2; crest
+#: SD 3.4 and 2.4 at means 3.8 and 3.3); on ch1, ch4 and ch5 the kurtosis SD is 0.44, 0.29
+#: and 0.39 and half the difference of the two runs' crest factors (column0_stats.csv,
+#: healthy 1 and 2: 4.1/4.7, 5.5/8.6, 6.6/10.0) already gives 0.28, 1.55 and 1.7 of their
+#: crest SD 0.56, 1.7 and 2.2: no room for a column of crest above about 10, 15 and 24 (a
+#: spike). The glitch rows of column0_stats.csv on ch1, ch4, ch5 are all fault runs'.
+#: Motor-2 and ch6: no source, Motor-4's
+GLITCH_HITS_HEALTHY = {"ch1": 0.0, "ch2": 0.5, "ch3": 0.5, "ch4": 0.0, "ch5": 0.0, "ch6": 0.0}
 #: a glitch's peak, g: log-uniform between these, fitted to the healthy columns' crest-factor
 #: SD (ch2 3.4, ch3 2.4). The glitch rows of column0_stats.csv peak at 0.2-50 g (the
 #: recorder's full scale): glitches above 15 g, rarer there, are left out of the model
@@ -216,12 +226,16 @@ def column_drift(
     return out
 
 
-def add_glitch(gen: np.random.Generator, out: dict[str, np.ndarray], column: int) -> None:
+def add_glitch(
+    gen: np.random.Generator, out: dict[str, np.ndarray], column: int, healthy: bool = False
+) -> None:
     """Maybe add one common-mode glitch to ``column`` of the channels in ``out`` (in place).
 
     Every draw is made for every channel, so a channel's signal does not depend on
-    which other channels are generated.
+    which other channels are generated; ``healthy``: the run is a healthy one, whose
+    glitches hit the channels ``GLITCH_HITS_HEALTHY`` names (same draws, fewer hits).
     """
+    hits = GLITCH_HITS_HEALTHY if healthy else GLITCH_HITS
     if gen.random() >= GLITCH_EVENT:
         return
     n = next(iter(out.values())).shape[1]
@@ -230,7 +244,7 @@ def add_glitch(gen: np.random.Generator, out: dict[str, np.ndarray], column: int
     peak = float(np.exp(gen.uniform(low, high)))
     width = int(gen.integers(1, 6))
     shape = np.cos(np.pi * np.arange(width))  # alternating samples: a digital spike
-    for ch, hit in GLITCH_HITS.items():
+    for ch in GLITCH_HITS:
         chance, factor = gen.random(), gen.uniform(0.5, 1.0)
-        if ch in out and chance < hit:
+        if ch in out and chance < hits[ch]:
             out[ch][column, start : start + width] += peak * factor * shape

@@ -142,28 +142,67 @@ def test_each_fault_family_moves_each_channel_as_the_real_rig(cells) -> None:
     assert np.mean(close) >= GUARD["seed0"]["ratio_to_healthy"] - 0.02
 
 
-def test_healthy_motor4_columns_spread_as_the_real_ones() -> None:
-    """Mean and SD over the 60 columns of healthy 1 and of healthy 2 (twelve acquisitions
-    each, as the real runs) within 25 % of healthy_spread_motor4.csv: RMS, and the crest
-    factor's mean (its real SD comes from a few glitched columns among 120). The columns
-    are 4 s long to keep the test short: RMS does not depend on the length, a Gaussian's
-    crest factor falls by 6 % from 12 s to 4 s."""
-    with (STATS / "healthy_spread_motor4.csv").open(newline="") as handle:
-        spread = {(r["statistic"], r["channel"]): (float(r["mean"]), float(r["sd"]))
-                  for r in csv.DictReader(handle)}  # fmt: skip
+@pytest.fixture(scope="module")
+def healthy_columns() -> dict[tuple[str, str], np.ndarray]:
+    """(statistic, channel) -> the value of every 12 s column of Motor-4 healthy 1 and 2.
+
+    Twelve acquisitions of five columns per run, glitches on: the real figures are a
+    StandardScaler's over the 120 real columns, glitched ones kept (the statistics' README).
+    """
     columns: dict[tuple[str, str], list[float]] = {}
     for level in (1, 2):
         run = generate_run(
-            "Motor-4", "healthy", level, channels=CHANNELS, acquisitions=60, duration_s=4.0,
-            seed=0, glitches=False,
+            "Motor-4", "healthy", level, channels=CHANNELS, acquisitions=60, duration_s=12.0,
+            seed=0,
         )  # fmt: skip
         for ch, x in run.items():
             for column in x:
                 for name, value in measure(column).items():
                     columns.setdefault((name, ch), []).append(value)
-    for ch in CHANNELS:
-        mean, sd = spread[("rms_g", ch)]
-        assert np.mean(columns[("rms_g", ch)]) == pytest.approx(mean, rel=0.25), ch
-        assert np.std(columns[("rms_g", ch)], ddof=1) == pytest.approx(sd, rel=0.25), ch
-        mean, _ = spread[("crest_factor", ch)]
-        assert np.mean(columns[("crest_factor", ch)]) == pytest.approx(mean, rel=0.25), ch
+    return {key: np.array(values) for key, values in columns.items()}
+
+
+#: ch1's crest-factor SD: the generator mixes every column to its run's crest factor, so
+#: within a run ch1 (no knocks, Gaussian-like peaks) spreads by about 0.2 where the real
+#: columns spread by about 0.5; synthetic 0.34 against 0.56 (issue 30, left open)
+CH1_CREST_SD = pytest.mark.xfail(strict=True, reason="ch1 crest SD 0.34, real 0.56: see issue 30")
+
+
+@pytest.mark.parametrize(
+    ("name", "ch", "moment"),
+    [
+        pytest.param(
+            n, c, k, marks=CH1_CREST_SD if (n, c, k) == ("crest_factor", "ch1", "sd") else ()
+        )
+        for n in ("rms_g", "crest_factor")
+        for c in CHANNELS
+        for k in ("mean", "sd")
+    ],
+)
+def test_healthy_motor4_columns_spread_as_the_real_ones(
+    healthy_columns, name: str, ch: str, moment: str
+) -> None:
+    """Mean and SD over the 120 columns of healthy 1 and 2 within 25 % of
+    healthy_spread_motor4.csv, for RMS and crest factor on every channel."""
+    with (STATS / "healthy_spread_motor4.csv").open(newline="") as handle:
+        spread = {(r["statistic"], r["channel"]): (float(r["mean"]), float(r["sd"]))
+                  for r in csv.DictReader(handle)}  # fmt: skip
+    values = healthy_columns[(name, ch)]
+    assert values.size == 120
+    real_mean, real_sd = spread[(name, ch)]
+    got, want = (values.mean(), real_mean) if moment == "mean" else (values.std(), real_sd)
+    assert got == pytest.approx(want, rel=0.25)
+
+
+def test_healthy_runs_glitch_on_ch2_and_ch3_only() -> None:
+    """The real healthy Motor-4 columns carry spikes on ch2 and ch3 and none on ch1, ch4
+    and ch5 (their kurtosis SD 0.44, 0.29, 0.39 in healthy_spread_motor4.csv); a fault
+    run's glitches reach those channels too (column0_stats.csv: unbalance motor 4 ch4/ch5)."""
+    hit: dict[str, set[str]] = {}
+    for condition, level in (("healthy", 1), ("unbalance motor", 4)):
+        options = dict(channels=CHANNELS, acquisitions=60, duration_s=0.5, seed=0)
+        with_glitches = generate_run("Motor-4", condition, level, **options)
+        without = generate_run("Motor-4", condition, level, glitches=False, **options)
+        hit[condition] = {ch for ch in CHANNELS if np.any(with_glitches[ch] != without[ch])}
+    assert hit["healthy"] and hit["healthy"] <= {"ch2", "ch3"}
+    assert hit["unbalance motor"] - {"ch2", "ch3"}
