@@ -1,4 +1,8 @@
-"""MATLAB v4-v7 ``.mat`` files through scipy.io; v7.3 (HDF5) files go to :mod:`.mat73`."""
+"""MATLAB v5-v7 ``.mat`` files through scipy.io; v7.3 (HDF5) files go to :mod:`.mat73`.
+
+The two share the suffix, so each sniffs the file's header; a headerless v4
+file is refused as neither (save it with ``-v7`` or ``-v7.3``).
+"""
 
 from __future__ import annotations
 
@@ -62,19 +66,19 @@ def read(path: Path, variable: str | None) -> np.ndarray:
 
 
 def sniff(head: bytes) -> bool:
-    """A MATLAB file that is not v7.3 (v5 text header, or v4 without one)."""
-    return not (head.startswith(b"MATLAB 7.3") or head[512:520] == HDF5_AT_512)
+    """A MATLAB v5-v7 file: its 116-byte text header says so (v7.3 goes to :mod:`.mat73`)."""
+    return head.startswith(b"MATLAB 5.0") and head[512:520] != HDF5_AT_512
 
 
 @hookimpl
 def register_signal_readers(register):
-    """Register the MATLAB v4-v7 reader."""
+    """Register the MATLAB v5-v7 reader."""
     register(
         ReaderSpec(
             name="mat",
             label="MATLAB v5",
             suffixes=(".mat",),
-            description="MATLAB v4-v7 .mat variables (scipy.io.loadmat)",
+            description="MATLAB v5-v7 .mat variables (scipy.io.loadmat)",
             source="scipy.io",
             sniff=sniff,
             scan=scan,

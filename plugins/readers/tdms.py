@@ -23,24 +23,18 @@ from sdt_framework.data.tokens import brief
 from sdt_framework.specs import ReaderSpec
 
 
-class _Cut(logging.Handler):
-    """Collects npTDMS's warnings (a truncated segment is a warning there, not an error)."""
-
-    def __init__(self) -> None:
-        super().__init__(logging.WARNING)
-        self.messages: list[str] = []
-
-    def emit(self, record: logging.LogRecord) -> None:
-        self.messages.append(record.getMessage())
-
-
 def _open(path: Path, metadata: bool):
     from nptdms import TdmsFile
+    from nptdms.log import log_manager
 
-    log = logging.getLogger("nptdms")
-    cut = _Cut()
-    log.addHandler(cut)
-    propagate, log.propagate = log.propagate, False
+    cut: list[str] = []
+
+    def catch(record: logging.LogRecord) -> bool:
+        """npTDMS warns (on its own console handler) where the file is cut short: keep it."""
+        cut.append(record.getMessage())
+        return False
+
+    log_manager.console_handler.addFilter(catch)
     try:
         tdms = TdmsFile.read_metadata(path) if metadata else TdmsFile.read(path)
     except OSError as exc:
@@ -50,12 +44,11 @@ def _open(path: Path, metadata: bool):
             f"{path}: not a readable TDMS file (npTDMS: {brief(exc)}); a copy cut short?"
         ) from None
     finally:
-        log.removeHandler(cut)
-        log.propagate = propagate
-    if cut.messages:
+        log_manager.console_handler.removeFilter(catch)
+    if cut:
         raise DataFileError(
-            f"{path}: truncated or damaged (npTDMS: {brief(cut.messages[0])}); the last "
-            f"segment is incomplete, so the file is not used; copy it from the DAQ again"
+            f"{path}: truncated: its last segment holds less data than its header declares "
+            f"(npTDMS); the file is not used; copy it from the DAQ again"
         )
     return tdms
 
