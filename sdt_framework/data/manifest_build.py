@@ -4,9 +4,8 @@ A template such as ``{machine}/{condition} {severity}/{run}/{channel}.tdms``
 is matched against every file's path relative to the folder (``/``
 separated). Fields: ``machine``, ``speed``, ``condition``, ``severity``,
 ``run`` and ``channel``; each matches one or more characters within one
-folder or file name, the rest of the template literally. ``condition`` and
-``run`` are required. A ``severity`` of ``-`` or an empty one is healthy;
-another that is not a whole number makes the file unmatched, with the reason.
+folder or file name (``severity``: a whole number, or ``-`` for healthy), the
+rest of the template literally. ``condition`` and ``run`` are required.
 
 Each matched file is scanned by its registered reader
 (:func:`~sdt_framework.data.signal_files.scan_file`) and gives one row per
@@ -58,7 +57,8 @@ def _segment_regex(segment: str, template: str) -> str:
                 f"--pattern {quote(template, 80)}: unknown field {{{quote(name)}}}; "
                 f"use {', '.join('{' + f + '}' for f in FIELDS)}"
             )
-        out += [re.escape(segment[pos : found.start()]), f"(?P<{name}>[^/]+?)"]
+        value = r"\d+|-" if name == "severity" else "[^/]+?"
+        out += [re.escape(segment[pos : found.start()]), f"(?P<{name}>{value})"]
         pos = found.end()
     return "".join([*out, re.escape(segment[pos:])])
 
@@ -88,9 +88,7 @@ def _match(parts: Sequence[str], patterns: list[re.Pattern[str]]) -> dict[str, s
         if found is None:
             return f"{quote(part, 60)} does not match {quote(pattern.pattern, 60)}"
         fields.update(found.groupdict())
-    severity = fields.get("severity", "").strip()
-    if severity not in ("", "-") and not severity.isdigit():
-        return f"severity {quote(severity)} is not a whole number (or '-' for healthy)"
+    severity = fields.get("severity", "")
     fields["severity"] = "" if severity == "-" else severity
     return fields
 
