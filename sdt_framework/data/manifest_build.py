@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import SDTError
-from .readers import acceleration_units
+from .readers import SignalInfo, acceleration_units
 from .signal_files import scan_file
 from .tokens import quote
 
@@ -93,6 +93,29 @@ def _match(parts: Sequence[str], patterns: list[re.Pattern[str]]) -> dict[str, s
     return fields
 
 
+def _row(file: Path, out_dir: Path, fields: dict[str, str], info: SignalInfo,
+         rate_hz: float | None, full_scale_g: str) -> dict[str, str]:  # fmt: skip
+    """One manifest row: labels from the path, rate and units from the file."""
+    try:
+        path = file.resolve().relative_to(out_dir.resolve()).as_posix()
+    except ValueError:
+        path = str(file.resolve())
+    rate = info.rate_hz if info.rate_hz is not None else rate_hz
+    return {
+        "path": path,
+        "sampling_rate_hz": repr(float(rate)),  # type: ignore[arg-type]
+        "condition": fields["condition"],
+        "severity": fields["severity"],
+        "recording_id": fields["run"],
+        "channel": fields.get("channel") or str(info.variable or file.stem).replace("/", "-"),
+        "machine": fields.get("machine", ""),
+        "units": (acceleration_units(info.units) if info.units else None) or "",
+        "variable": "" if info.variable is None else str(info.variable),
+        "speed": fields.get("speed", ""),
+        "full_scale_g": full_scale_g,
+    }
+
+
 def build_manifest(
     folder: Path,
     template: str,
@@ -123,33 +146,13 @@ def build_manifest(
         except SDTError as exc:
             built.unmatched.append((relative.as_posix(), str(exc)))
             continue
+        if rate_hz is None and any(info.rate_hz is None for info in infos):
+            why = f"a {reader.label} file holds no rate; give --rate-hz"
+            built.unmatched.append((relative.as_posix(), why))
+            continue
         built.files += 1
-        try:
-            path = file.resolve().relative_to(out_dir.resolve()).as_posix()
-        except ValueError:
-            path = str(file.resolve())
-        for info in infos:
-            rate = info.rate_hz if info.rate_hz is not None else rate_hz
-            if rate is None:
-                built.unmatched.append((relative.as_posix(), f"a {reader.label} file holds no "
-                                        "rate; give --rate-hz"))  # fmt: skip
-                built.files -= 1
-                break
-            units = acceleration_units(info.units) if info.units else ""
-            built.rows.append({
-                "path": path,
-                "sampling_rate_hz": repr(float(rate)),
-                "condition": fields["condition"],
-                "severity": fields["severity"],
-                "recording_id": fields["run"],
-                "channel": fields.get("channel") or str(info.variable or file.stem).replace("/", "-"),
-                "machine": fields.get("machine", ""),
-                "units": units or "",
-                "variable": "" if info.variable is None else str(info.variable),
-                "speed": fields.get("speed", ""),
-                "full_scale_g": "" if full_scale_g is None or "full_scale_g" not in reader.options
-                else repr(full_scale_g),
-            })  # fmt: skip
+        scale = repr(full_scale_g) if options and "full_scale_g" in reader.options else ""
+        built.rows += [_row(file, out_dir, fields, info, rate_hz, scale) for info in infos]
     if not built.rows:
         first = (
             f"; first: {built.unmatched[0][0]}: {built.unmatched[0][1]}" if built.unmatched else ""

@@ -41,6 +41,7 @@ __all__ = [
 #: how many leading bytes of a file a reader's ``sniff`` sees
 SNIFF_BYTES = 1024
 
+
 def _head(file: Path) -> bytes:
     try:
         with open(file, "rb") as handle:
