@@ -67,7 +67,7 @@ def _info(path: Path, group, channel) -> SignalInfo:
         rate,
         str(props["unit_string"]) if props.get("unit_string") else None,
         "wf_increment" if rate else "",
-        label=f"start {start}" if start is not None else "",
+        label=f"start {np.datetime_as_string(start, unit='s')}" if start is not None else "",
     )
 
 

@@ -46,7 +46,7 @@ def inspect_file(ctx: typer.Context, path: str, as_json: bool) -> None:
         for i in infos
     ]
     table(
-        f"{path}: {reader.label}, {len(infos)} signals",
+        f"{path}: {reader.label}, {len(infos)} signal{'' if len(infos) == 1 else 's'}",
         ["variable", "label", "acquisitions", "samples", "rate Hz", "units", "duration s"],
         rows,
     )

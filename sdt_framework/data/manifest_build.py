@@ -41,10 +41,11 @@ _FIELD = re.compile(r"\{([^{}]*)\}")
 
 @dataclass
 class BuiltManifest:
-    """Manifest rows (column -> text), the files matched, and those left out with why."""
+    """Manifest rows (column -> text), files read and matched, and those left out with why."""
 
     rows: list[dict[str, str]] = field(default_factory=list)
     files: int = 0
+    matched: int = 0
     unmatched: list[tuple[str, str]] = field(default_factory=list)
 
 
@@ -138,11 +139,14 @@ def build_manifest(
         if isinstance(fields, str):
             built.unmatched.append((relative.as_posix(), fields))
             continue
+        built.matched += 1
         options = {"full_scale_g": full_scale_g} if full_scale_g is not None else {}
         try:
             reader, infos = scan_file(file, readers)
-            if options and "full_scale_g" in reader.options:
+            if "full_scale_g" in reader.options:
                 infos = reader.scan(file, **options)
+                for info in infos:  # a probe refuses what the row could not read
+                    reader.probe(file, info.variable, **options)
         except SDTError as exc:
             built.unmatched.append((relative.as_posix(), str(exc)))
             continue
@@ -157,10 +161,12 @@ def build_manifest(
         first = (
             f"; first: {built.unmatched[0][0]}: {built.unmatched[0][1]}" if built.unmatched else ""
         )
-        raise SDTError(
-            f"--pattern {quote(template, 80)} matches none of the {len(files)} files under "
-            f"{folder}{first}"
-        )
+        what = (
+            f"matches {built.matched} of the {len(files)} files under {folder} and none of them "
+            f"could be read" if built.matched else
+            f"matches none of the {len(files)} files under {folder}"
+        )  # fmt: skip
+        raise SDTError(f"--pattern {quote(template, 80)} {what}{first}")
     return built
 
 

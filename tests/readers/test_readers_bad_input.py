@@ -128,3 +128,28 @@ def test_a_file_of_no_recognised_format_names_those_that_are(sdt_main, tmp_path)
     for label in ("TDMS (.tdms)", "UFF58 (.uff, .unv, .uf)", "WAV (.wav)", "LabVIEW LVM (.lvm)",
                   "MATLAB v7.3 (.mat)", "enDAQ IDE (.ide)"):  # fmt: skip
         assert label in line
+
+
+def test_manifest_building_names_what_a_file_lacks(sdt_main, tmp_path):
+    """An integer WAV without --full-scale-g and an NPY without --rate-hz are not rows."""
+    tree = tmp_path / "tree" / "bench" / "healthy" / "r1"
+    tree.mkdir(parents=True)
+    shutil.copy(DATA / "test-44100Hz-le-1ch-4bytes.wav", tree / "ch1.wav")
+    np.save(tree / "ch2.npy", np.zeros(64))
+    out = tmp_path / "m.csv"
+    args = ("dataset", "manifest", str(tmp_path / "tree"), "--pattern",
+            "{machine}/{condition}/{run}/{channel}", "--out", str(out))  # fmt: skip
+    code, _, err = sdt_main(*args)
+    assert code == 2
+    line = _one_error_line(err)
+    assert "matches 2 of the 2 files under" in line and "none of them could be read" in line
+    assert "ch1.wav: integer PCM (32-bit) samples are counts" in line
+    code, printed, err = sdt_main(*args, "--full-scale-g", "50")
+    assert code == 0
+    assert "not matched: bench/healthy/r1/ch2.npy: a NPY file holds no rate; give --rate-hz" in err
+    assert "1 rows from 1 files (1 recordings); 1 files not matched" in printed
+    assert (
+        out.read_text(encoding="utf-8")
+        .splitlines()[1]
+        .endswith(",44100.0,healthy,,r1,ch1.wav,bench,g,ch1,50.0")
+    )
