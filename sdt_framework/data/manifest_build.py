@@ -64,7 +64,7 @@ def _segment_regex(segment: str, template: str) -> str:
     return "".join([*out, re.escape(segment[pos:])])
 
 
-def compile_template(template: str) -> list[re.Pattern[str]]:
+def compile_template(template: str) -> list[tuple[str, re.Pattern[str]]]:
     """One compiled pattern per ``/``-separated part of ``template``; bad templates refused."""
     names = _FIELD.findall(template)
     missing = [f for f in REQUIRED_FIELDS if f not in names]
@@ -76,18 +76,21 @@ def compile_template(template: str) -> list[re.Pattern[str]]:
     repeated = sorted({n for n in names if names.count(n) > 1})
     if repeated:
         raise SDTError(f"--pattern {quote(template, 80)}: field {{{repeated[0]}}} appears twice")
-    return [re.compile(_segment_regex(s, template)) for s in template.strip("/").split("/")]
+    parts = template.strip("/").split("/")
+    return [(part, re.compile(_segment_regex(part, template))) for part in parts]
 
 
-def _match(parts: Sequence[str], patterns: list[re.Pattern[str]]) -> dict[str, str] | str:
+def _match(
+    parts: Sequence[str], patterns: list[tuple[str, re.Pattern[str]]]
+) -> dict[str, str] | str:
     """The fields of a path, or why it does not match."""
     if len(parts) != len(patterns):
         return f"{len(parts)} path levels, the pattern has {len(patterns)}"
     fields: dict[str, str] = {}
-    for part, pattern in zip(parts, patterns, strict=True):
+    for part, (segment, pattern) in zip(parts, patterns, strict=True):
         found = pattern.fullmatch(part)
         if found is None:
-            return f"{quote(part, 60)} does not match {quote(pattern.pattern, 60)}"
+            return f"{quote(part, 60)} does not match {quote(segment, 60)}"
         fields.update(found.groupdict())
     severity = fields.get("severity", "")
     fields["severity"] = "" if severity == "-" else severity
