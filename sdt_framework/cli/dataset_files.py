@@ -77,12 +77,13 @@ def manifest(
     Each file matching --pattern gives one row per signal it holds. With {channel}
     in the pattern a file's signals are that channel's acquisitions; without it,
     each signal is a channel named by the file. A severity of '-' is healthy.
-    Files that do not match are listed with the reason.
+    Files that do not match are listed with the reason. A DAQ campaign's tree
+    reads with a pattern such as '{machine}/{condition} {severity}/{run}/{channel}.tdms'.
 
     Example:
 
-      sdt dataset manifest recordings --pattern '{machine}/{condition} {severity}/{run}/{channel}.tdms' --out manifest.csv
-    """  # noqa: E501
+      sdt dataset manifest tests/data/readers --pattern '{condition}_{run}.uff' --out uff.csv
+    """
     from ..data.manifest_build import build_manifest, manifest_csv
     from .guards import check_output_file, os_errors
 
