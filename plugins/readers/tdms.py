@@ -23,7 +23,9 @@ from sdt_framework.data.tokens import brief
 from sdt_framework.specs import ReaderSpec
 
 
-def _open(path: Path, metadata: bool):
+def _load(path: Path, group: str | None = None, name: str | None = None):
+    """The file's metadata (no ``group``), or one channel's scaled samples, read alone
+    (``TdmsFile.open`` streams: the other channels are not read)."""
     from nptdms import TdmsFile
     from nptdms.log import log_manager
 
@@ -36,7 +38,11 @@ def _open(path: Path, metadata: bool):
 
     log_manager.console_handler.addFilter(catch)
     try:
-        tdms = TdmsFile.read_metadata(path) if metadata else TdmsFile.read(path)
+        if group is None:
+            found = TdmsFile.read_metadata(path)
+        else:
+            with TdmsFile.open(path) as tdms:
+                found = tdms[group][name][:]
     except OSError as exc:
         raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
     except Exception as exc:  # npTDMS raises ValueError, KeyError, struct.error... on bad bytes
@@ -50,7 +56,7 @@ def _open(path: Path, metadata: bool):
             f"{path}: truncated: its last segment holds less data than its header declares "
             f"(npTDMS); the file is not used; copy it from the DAQ again"
         )
-    return tdms
+    return found
 
 
 def _info(path: Path, group, channel) -> SignalInfo:
@@ -73,7 +79,7 @@ def _info(path: Path, group, channel) -> SignalInfo:
 
 def scan(path: Path) -> list[SignalInfo]:
     """Every channel, from the metadata alone."""
-    tdms = _open(path, metadata=True)
+    tdms = _load(path)
     return [_info(path, g, c) for g in tdms.groups() for c in g.channels()]
 
 
@@ -86,7 +92,7 @@ def read(path: Path, variable: str | None) -> np.ndarray:
     """float64 (1, n_samples), scaled, all finite; the length is checked against the metadata."""
     info = probe(path, variable)
     group, _, name = str(info.variable).partition("/")
-    data = _open(path, metadata=False)[group][name][:]
+    data = _load(path, group, name)
     if len(data) != info.n_samples:
         raise DataFileError(
             f"{path}: channel {info.variable!r} should hold {info.n_samples:,} values and holds "
