@@ -30,7 +30,7 @@ import numpy as np
 from .errors import SDTError, validation_summary
 from .parts import PartSpec, all_modes, resolve
 from .registry import Registry, build_registry, load_entry_point
-from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
+from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, ReaderSpec, SensorSpec, Spec
 from .stages import StageContext, StageSpec
 
 __all__ = ["ConformanceError", "check_plugin", "check_spec"]
@@ -179,6 +179,21 @@ def _check_dataset(spec: DatasetSpec) -> None:
         _fail(spec, f"load() returned shape {data.shape} or non-finite values")
 
 
+def _check_reader(spec: ReaderSpec) -> None:
+    """A reader needs a real file of its format to be read; here only what holds for any:
+    it names a suffix, and its sniff answers (never raises) on bytes of another format."""
+    if not spec.suffixes:
+        _fail(spec, "names no suffix")
+    if spec.sniff is not None:
+        for head in (b"", b"\x00" * 1024, b"time,acc\n0,1\n"):
+            try:
+                answer = spec.sniff(head)
+            except Exception as exc:
+                _fail(spec, f"sniff raised {type(exc).__name__} on {len(head)} bytes")
+            if not isinstance(answer, bool):
+                _fail(spec, f"sniff returned {type(answer).__name__}, not bool")
+
+
 _CHECKS: dict[type[Spec], Callable[[Any], None]] = {
     SensorSpec: _check_sensor,
     FeatureSetSpec: _check_feature_set,
@@ -186,6 +201,7 @@ _CHECKS: dict[type[Spec], Callable[[Any], None]] = {
     DatasetSpec: _check_dataset,
     PartSpec: _check_part,
     StageSpec: _check_stage,
+    ReaderSpec: _check_reader,
 }
 
 
@@ -230,6 +246,7 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
         *fresh.datasets(),
         *fresh.parts(),
         *fresh.stages(),
+        *fresh.signal_readers(),
     ]
     if not specs:
         raise ConformanceError(f"plugin {info.name!r} registers nothing")
@@ -240,6 +257,7 @@ def check_plugin(plugin: Any, *, installed: Registry | None = None) -> list[Spec
         DatasetSpec: installed.datasets(),
         PartSpec: installed.parts(),
         StageSpec: installed.stages(),
+        ReaderSpec: installed.signal_readers(),
     }
     taken[SensorSpec] += installed.parts()  # one namespace: a part is used where a sensor is
     taken[PartSpec] += installed.sensors()

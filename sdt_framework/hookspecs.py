@@ -85,3 +85,17 @@ def register_stages(register: Register) -> None:
     profile adds it by listing ``{name = "...", params = {...}}`` in its
     ``stages``.
     """
+
+
+@hookspec
+def register_signal_readers(register: Register) -> None:
+    """Provide signal file readers (``sdt_framework.specs.ReaderSpec``).
+
+    Called once when a registry is built. Call ``register(ReaderSpec(...))``
+    for each file format: its suffixes, an optional ``sniff(head)`` of the
+    file's first 1024 bytes (needed when another reader shares a suffix), and
+    ``scan``/``probe``/``read`` functions returning
+    ``sdt_framework.data.readers.SignalInfo`` and float64 samples. A manifest
+    row, ``sdt dataset inspect FILE`` and ``sdt dataset manifest`` pick the
+    reader by suffix and sniff; one reader per module.
+    """

@@ -10,7 +10,8 @@ a spec, stamps its provenance and rejects duplicates.
 names (``degrade(x, fs, "adxl345")``) are resolved in; importing this module
 installs it as the binder of the stages a profile built in Python lists (see
 :func:`sdt_framework.stages.install_stage_binder`), so the chain binds them
-without importing the registry.
+without importing the registry; it installs the default registry's signal
+readers for the data layer the same way (:mod:`sdt_framework.reader_table`).
 """
 
 from __future__ import annotations
@@ -38,9 +39,18 @@ from .discovery import (
 )
 from .errors import DuplicateNameError, PluginLoadError, validation_summary
 from .parts import PartSpec
+from .reader_table import install_reader_table
 from .registry_lookup import RegistryLookup
 from .sensor_files import load_sensor_file, sensor_files_from_env
-from .specs import POINT_SUFFIX, ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
+from .specs import (
+    POINT_SUFFIX,
+    ClassifierSpec,
+    DatasetSpec,
+    FeatureSetSpec,
+    ReaderSpec,
+    SensorSpec,
+    Spec,
+)
 from .stages.bind import install_stage_binder
 from .stages.spec import StageSpec
 
@@ -55,6 +65,7 @@ HOOKS: dict[str, type[Spec]] = {
     "register_datasets": DatasetSpec,
     "register_parts": PartSpec,
     "register_stages": StageSpec,
+    "register_signal_readers": ReaderSpec,
 }
 #: kinds that share one namespace: a part is used where a sensor is
 _SAME_NAMES = {SensorSpec: PartSpec, PartSpec: SensorSpec}
@@ -285,3 +296,11 @@ def _bind_in_default(sensor: SensorSpec) -> SensorSpec:
 
 
 install_stage_binder(_bind_in_default)
+
+
+def _readers_in_default() -> list[ReaderSpec]:
+    """The signal readers of :func:`default_registry` (read at call time)."""
+    return default_registry().signal_readers()
+
+
+install_reader_table(_readers_in_default)

@@ -13,7 +13,7 @@ from typing import TypeVar
 from .discovery import PluginInfo
 from .errors import DuplicateNameError, SDTError, UnknownNameError
 from .parts import PartSpec, resolve, split_name
-from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, SensorSpec, Spec
+from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, ReaderSpec, SensorSpec, Spec
 from .stages.bind import bind_stages
 from .stages.spec import StageSpec
 
@@ -133,6 +133,14 @@ class RegistryLookup:
     def datasets(self) -> list[DatasetSpec]:
         """All datasets, sorted by name."""
         return self._all(DatasetSpec)
+
+    def signal_reader(self, name: str) -> ReaderSpec:
+        """The signal file reader called ``name``."""
+        return self._get(ReaderSpec, name)
+
+    def signal_readers(self) -> list[ReaderSpec]:
+        """All signal file readers, sorted by name."""
+        return self._all(ReaderSpec)
 
     def plugins(self) -> list[PluginInfo]:
         """Every plugin seen, in discovery order, with its status."""

@@ -11,6 +11,9 @@ import typer
 
 from ..errors import SDTError
 from .common import console, err_console, print_json, registry, table
+from .dataset_files import inspect_file, manifest
+
+MANIFESTS = (".csv", ".parquet", ".toml")
 
 app = typer.Typer(help="List, generate and inspect datasets.", no_args_is_help=True)
 
@@ -138,7 +141,9 @@ def _existing_recordings(out: Path, overwrite: bool) -> set[Path]:
 def inspect(
     ctx: typer.Context,
     path_or_name: str = typer.Argument(
-        ..., help="NLN-EMP folder, manifest .csv/.parquet, or a dataset name."
+        ...,
+        help="NLN-EMP folder, manifest .csv/.parquet, a dataset name, or one signal file "
+        "(TDMS, UFF58, WAV, LVM, MAT, NPY, IDE...).",
     ),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
     validate: bool = typer.Option(
@@ -149,10 +154,14 @@ def inspect(
 
     An enDAQ .IDE recording lists its channels instead: subchannels (axes),
     units, the sensor table's parts and the rate measured from the timestamps.
+    Any other signal file (not .csv/.parquet, which are manifests) lists its
+    signals: the manifest 'variable' naming each, rate and units from the file.
 
     Example:
 
       sdt dataset inspect tests/data/endaq/SSX66115.IDE
+
+      sdt dataset inspect tests/data/readers/raw1.tdms
 
       sdt dataset synth --out data/synthetic --duration 2   # an NLN-EMP-shaped folder
 
@@ -166,6 +175,9 @@ def inspect(
 
     if is_ide(path_or_name):
         _inspect_ide(path_or_name, as_json)
+        return
+    if _is_signal_file(path_or_name):
+        inspect_file(ctx, path_or_name, as_json)
         return
     if Path(path_or_name).suffix.lower() == ".toml":
         raise SDTError(
@@ -224,6 +236,15 @@ def inspect(
                 f"skipped {item['path']}: {item['reason']}", highlight=False, soft_wrap=True
             )
     console.print(dataset.summary_line(), highlight=False, soft_wrap=True)
+
+
+def _is_signal_file(path: str) -> bool:
+    """A file (not a folder, not a manifest or pair file) given to ``inspect``."""
+    candidate = Path(path).expanduser()
+    return candidate.is_file() and candidate.suffix.lower() not in MANIFESTS
+
+
+app.command("manifest")(manifest)
 
 
 def _inspect_ide(path: str, as_json: bool) -> None:

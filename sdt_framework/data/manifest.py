@@ -3,17 +3,26 @@
 Columns (one row per file, or per variable/column of a file):
 
 ========================  =====================================================
-path                      CSV, NPY or MAT file; relative to the manifest folder
-sampling_rate_hz          rate of the stored samples, Hz
+path                      a signal file any registered reader reads (CSV, NPY,
+                          MAT, IDE, TDMS, UFF58, WAV, LVM); relative to the
+                          manifest folder
+sampling_rate_hz          rate of the stored samples, Hz; may be empty where
+                          the file holds its rate
 condition                 class label (``healthy``, ``bearing bpfo``, ...)
 severity                  fault level (integer), empty for healthy
 recording_id              the physical run: rows sharing it are one run
 channel                   sensor position (``ch1``, ``pump-DE-h``, ...)
 machine (optional)        default ``"machine"``
 units (optional)          ``g`` (default), ``mg`` or ``m/s^2``
-variable (optional)       CSV column name or MATLAB variable
+variable (optional)       the signal in the file (CSV column, MATLAB variable,
+                          TDMS ``GROUP/CHANNEL``, UFF58 number, WAV ``chN``,
+                          LVM channel, IDE ``CHANNEL:AXIS``)
 speed (optional)          operating point label
+full_scale_g (optional)   a reader's option: g at full scale of an integer WAV
 ========================  =====================================================
+
+A file's rate and units, where it holds them, must agree with the row's
+(:mod:`.manifest_files`); an empty field takes the file's.
 
 Rows sharing (machine, recording_id, channel) are the acquisitions of one
 :class:`Recording`, in manifest order; its ``recording_id`` is
@@ -30,6 +39,7 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Sequence
 from functools import partial
 from pathlib import Path
 from typing import Any
@@ -38,6 +48,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..inputs import not_regular
+from .manifest_files import probe_row, reconcile
 from .manifest_table import ManifestRow, read_manifest_rows
 from .recording import (
     DataFileError,
@@ -47,13 +58,12 @@ from .recording import (
     Skipped,
     measurement_groups,
 )
-from .signal_files import ide_rate, read_signal, signal_shape
 from .tokens import quote
 
 __all__ = ["REQUIRED", "UNITS_TO_G", "open_manifest"]
 
 REQUIRED = ("path", "sampling_rate_hz", "condition", "severity", "recording_id", "channel")
-OPTIONAL = ("machine", "units", "variable", "speed")
+OPTIONAL = ("machine", "units", "variable", "speed", "full_scale_g")
 UNITS_TO_G = {"g": 1.0, "mg": 1e-3, "m/s^2": 1.0 / 9.80665}
 
 
@@ -86,16 +96,16 @@ def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
                 f"must not be empty (field {field!r} is)"
             )
     try:
-        rate = float(_cell(row, "sampling_rate_hz"))
-        if not (np.isfinite(rate) and rate > 0):
+        rate = float(_cell(row, "sampling_rate_hz")) if _cell(row, "sampling_rate_hz") else None
+        if rate is not None and not (np.isfinite(rate) and rate > 0):
             raise ValueError
     except ValueError:
         raise SDTError(
             f"{where}: field 'sampling_rate_hz' = {quote(_cell(row, 'sampling_rate_hz'))} "
             f"is not a positive number"
         ) from None
-    units = _cell(row, "units") or "g"
-    if units not in UNITS_TO_G:
+    units = _cell(row, "units")
+    if units and units not in UNITS_TO_G:
         raise SDTError(
             f"{where}: field 'units' = {quote(units)}; use one of {', '.join(UNITS_TO_G)}"
         )
@@ -113,6 +123,7 @@ def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
         "channel": _cell(row, "channel"),
         "line": row.number,
         "where": row.where,
+        "cells": row.cells,
     }
 
 
@@ -142,7 +153,11 @@ def _refuse_duplicates(manifest: Path, header: list[str], rows: list[ManifestRow
 
 
 def open_manifest(
-    path: str | os.PathLike[str], *, name: str = "manifest", validate: bool = False
+    path: str | os.PathLike[str],
+    *,
+    name: str = "manifest",
+    validate: bool = False,
+    readers: Sequence[Any] | None = None,
 ) -> Dataset:
     """Open a manifest file; see the module docstring for its columns.
 
@@ -152,6 +167,9 @@ def open_manifest(
         ``.csv`` or ``.parquet`` manifest.
     validate
         Read every signal now so that bad files land in ``skipped``.
+    readers
+        The signal readers (``ReaderSpec``) to read files with; default: the
+        registered ones (:mod:`sdt_framework.reader_table`).
     """
     manifest = Path(path).expanduser()
     columns, rows = read_manifest_rows(manifest)
@@ -171,6 +189,7 @@ def open_manifest(
     groups: dict[tuple[str, str, str], list[dict[str, Any]]] = {}
     skipped: list[Skipped] = []
     notes: list[str] = []
+    other_notes: list[str] = []
     for fields in all_fields:
         if not fields["file"].is_file():
             kind = not_regular(fields["file"])
@@ -181,16 +200,16 @@ def open_manifest(
             )
             continue
         try:
-            fields["shape"], note = signal_shape(fields["file"], fields["variable"])
+            reader, info, options = probe_row(fields, readers)
         except DataFileError as exc:
             skipped.append(Skipped(str(fields["file"]), f"{exc} (manifest {fields['where']})"))
             continue
         except SignalTypeError as exc:
             raise SignalTypeError(f"{exc} (manifest {manifest} {fields['where']})") from None
-        if fields["file"].suffix.lower() == ".ide":
-            _check_ide_rate(fields, manifest)
-        if note:
-            notes.append(note)
+        reconcile(fields, info, reader, manifest)
+        fields["shape"], fields["load"] = info.shape, (reader.read, tuple(options.items()))
+        if info.note:
+            (notes if reader.name == "csv" else other_notes).append(info.note)
         key = (fields["machine"], fields["run"], fields["channel"])
         groups.setdefault(key, []).append(fields)
     _refuse_shared_ids(manifest, groups)
@@ -229,12 +248,14 @@ def open_manifest(
                 measurement=measurement_groups(n_acq),
                 source=str(first["file"]),
                 reader=partial(
-                    _load_rows, tuple((r["file"], r["variable"], r["units"]) for r in rows)
+                    _load_rows,
+                    tuple((r["file"], r["variable"], r["units"], *r["load"]) for r in rows),
                 ),
             )
         )
     if len(notes) > 1:
         notes = [f"{len(notes)} CSV files had a time column, dropped; first: {notes[0]}"]
+    notes += list(dict.fromkeys(other_notes))
     dataset = Dataset(name, recordings, skipped, notes)
     if validate:
         dataset.validate()
@@ -256,21 +277,9 @@ def _refuse_shared_ids(
         seen[rid] = rows[0]["where"]
 
 
-def _load_rows(rows: tuple[tuple[Path, str | None, str], ...]) -> np.ndarray:
-    parts = [read_signal(file, variable) * UNITS_TO_G[units] for file, variable, units in rows]
+def _load_rows(rows: tuple[tuple[Path, str | None, str, Any, tuple], ...]) -> np.ndarray:
+    parts = [
+        read(file, variable, **dict(options)) * UNITS_TO_G[units]
+        for file, variable, units, read, options in rows
+    ]
     return np.concatenate(parts, axis=0)
-
-
-#: largest relative difference between a manifest's rate and an IDE channel's measured rate
-IDE_RATE_TOLERANCE = 0.001
-
-
-def _check_ide_rate(fields: dict[str, Any], manifest: Path) -> None:
-    """An IDE row's ``sampling_rate_hz`` must be the channel's measured rate (0.1 %)."""
-    measured = ide_rate(fields["file"], fields["variable"])
-    if abs(fields["rate"] / measured - 1) > IDE_RATE_TOLERANCE:
-        raise SDTError(
-            f"{fields['file']}: channel {fields['variable']} runs at {measured:.2f} Hz by its "
-            f"timestamps, the manifest says {fields['rate']:g} Hz (manifest {manifest} "
-            f"{fields['where']}); give the measured rate (`sdt dataset inspect` prints it)"
-        )

@@ -54,6 +54,9 @@ def open_dataset(registry: Any, path_or_name: str | os.PathLike[str], **options:
         require_regular_file(path, "manifest")
         if not path.is_file():
             raise SDTError(f"manifest {path} not found")
+        readers = getattr(registry, "signal_readers", None)  # a manifest reads with these
+        if readers is not None and "readers" not in options:
+            options = {**options, "readers": readers()}
         return registry.dataset("manifest").loader(path, **options)
     raise SDTError(
         f"{text!r} is neither a registered dataset ({', '.join(sorted(names)) or 'none'}) "

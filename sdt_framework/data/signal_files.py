@@ -1,158 +1,117 @@
-"""Read one signal file of a manifest row: CSV, NPY or MATLAB ``.mat``.
+"""Find the reader of a signal file among the registered ones, and read through it.
 
-Every file becomes a float64 array (n_acquisitions, n_samples). A 1-D signal
-is one acquisition. A 2-D array holds several acquisitions; its longer axis is
-time (MATLAB users store signals as columns, numpy users as rows, and an
-acquisition is always longer than the number of acquisitions). CSV follows the
-same rule through :func:`~sdt_framework.data.csv_signal.read_csv_signal`
-(header and time column detected; the named column, or every other column).
-A file that cannot be opened is a :class:`DataFileError`, never an ``OSError``,
-so a bad row lands in ``skipped`` and the others are read.
+Readers are plugins (:class:`~sdt_framework.specs.ReaderSpec`, hook
+``register_signal_readers``): CSV, NPY, MATLAB v5 and v7.3, enDAQ IDE, TDMS,
+UFF58, WAV and LabVIEW LVM are built in and registered through the same entry
+points as a third party's. A file's reader is chosen by suffix; where several
+readers share a suffix (``.mat``: v5 and v7.3) or a file has none of the known
+suffixes, by each reader's ``sniff`` of the file's first bytes. A file no
+reader recognises is refused naming the formats that are.
+
+The data layer sits below the registry, so the readers table is handed down:
+a caller passes ``readers``, or :mod:`sdt_framework.registry` installs the
+default registry's table when imported (:mod:`sdt_framework.reader_table`).
+A manifest resolves each row's reader when it is opened and keeps the
+reader's ``read`` function, so a worker process never needs the registry.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
-from ..dtypes import describe_dtype, is_real
-from ..errors import SDTError
-from .csv_signal import read_csv_signal
-from .recording import DataFileError, SignalTypeError
-from .tokens import brief, quote
+from ..reader_table import reader_table
+from .readers import SignalInfo
+from .recording import DataFileError
+from .tokens import brief
 
-__all__ = ["ide_rate", "read_signal", "signal_shape"]
+__all__ = [
+    "SNIFF_BYTES",
+    "known_formats",
+    "probe_signal",
+    "read_signal",
+    "reader_for",
+    "scan_file",
+    "signal_shape",
+]
 
-SUFFIXES = (".csv", ".npy", ".mat", ".ide")
+#: how many leading bytes of a file a reader's ``sniff`` sees
+SNIFF_BYTES = 1024
 
 
-def _orient(file: Path, shape: tuple[int, ...]) -> tuple[int, int]:
-    if len(shape) == 1:
-        return 1, shape[0]
-    if len(shape) == 2:
-        return (shape[1], shape[0]) if shape[0] > shape[1] else (shape[0], shape[1])
-    raise DataFileError(f"{file}: array of shape {shape}; expected 1-D or 2-D")
-
-
-def _mat_variable(file: Path, variable: str | None) -> tuple[str, tuple[int, ...]]:
-    import scipy.io
-
+def _head(file: Path) -> bytes:
     try:
-        found = {name: shape for name, shape, _ in scipy.io.whosmat(file)}
+        with open(file, "rb") as handle:
+            return handle.read(SNIFF_BYTES)
     except OSError as exc:
         raise DataFileError(f"{file}: cannot read ({exc.strerror or brief(exc)})") from None
-    except (ValueError, NotImplementedError, TypeError) as exc:
-        raise DataFileError(f"{file}: not a readable MATLAB file ({brief(exc)})") from None
-    if variable is None:
-        if len(found) != 1:
-            raise DataFileError(
-                f"{file}: holds variables {_names(sorted(found))}; name one in 'variable'"
-            )
-        variable = next(iter(found))
-    if variable not in found:
-        raise DataFileError(f"{file}: no variable {quote(variable)}; found {_names(sorted(found))}")
-    return variable, found[variable]
 
 
-def _names(names: list[str]) -> str:
-    """At most 8 names, each a short token (names come from the file)."""
-    return ", ".join(quote(n) for n in names[:8]) + (", ..." if len(names) > 8 else "")
-
-
-def _load_npy(file: Path, **options: object) -> np.ndarray:
+def _sniffs(reader: Any, head: bytes) -> bool:
     try:
-        data = np.load(file, allow_pickle=False, **options)  # type: ignore[call-overload]
-    except OSError as exc:
-        raise DataFileError(f"{file}: cannot read ({exc.strerror or brief(exc)})") from None
-    except (ValueError, EOFError) as exc:
-        raise DataFileError(f"{file}: not a readable NPY file ({brief(exc)})") from None
-    return _real(file, data)
+        return bool(reader.sniff(head))
+    except Exception:  # a plugin's sniff failing on odd bytes: it does not claim the file
+        return False
 
 
-def _real(file: Path, data: np.ndarray) -> np.ndarray:
-    """``data`` if it holds real numbers; booleans, complex, text... are refused by name."""
-    if not is_real(data.dtype):
-        raise SignalTypeError(
-            f"{file}: holds {describe_dtype(data.dtype)}, not real numbers; save the signal "
-            f"as int or float samples in g (nothing is converted for you)"
+def known_formats(readers: Sequence[Any]) -> str:
+    """``CSV (.csv), NPY (.npy), ...``: every registered format, for messages."""
+    return ", ".join(f"{r.label} ({', '.join(r.suffixes)})" for r in readers)
+
+
+def reader_for(file: str | Path, readers: Sequence[Any] | None = None) -> Any:
+    """The reader of ``file``: by suffix, then by sniffing the first bytes; else refused."""
+    file = Path(file)
+    readers = reader_table() if readers is None else list(readers)
+    suffix = file.suffix.lower()
+    by_suffix = [r for r in readers if suffix in r.suffixes]
+    if len(by_suffix) == 1 and by_suffix[0].sniff is None:
+        return by_suffix[0]
+    head = _head(file)
+    pool = by_suffix or [r for r in readers if r.sniff is not None]
+    claimed = [r for r in pool if r.sniff is not None and _sniffs(r, head)]
+    if claimed:
+        return claimed[0]
+    unsniffed = [r for r in by_suffix if r.sniff is None]
+    if unsniffed:
+        return unsniffed[0]
+    if by_suffix:
+        labels = " or ".join(r.label for r in by_suffix)
+        raise DataFileError(
+            f"{file}: named {suffix} but its first bytes are not those of a {labels} file "
+            f"({len(head)} bytes read); check the file (a copy cut short, another format)"
         )
-    return data
+    raise DataFileError(
+        f"{file}: format not recognised (suffix {suffix or '(none)'!r}); sdt reads "
+        f"{known_formats(readers)}; a reader plugin adds others"
+    )
 
 
-def _ide(file: Path, variable: str | None):
-    """One axis of an enDAQ IDE file (``variable = CHANNEL:AXIS``), on its even grid."""
-    from .ide import read_variable  # idelib: on use only
-
-    try:
-        return read_variable(file, variable)
-    except SDTError as exc:
-        raise DataFileError(str(exc)) from None
+def scan_file(
+    file: str | Path, readers: Sequence[Any] | None = None, **options: Any
+) -> tuple[Any, list[SignalInfo]]:
+    """(reader, every signal of ``file``) for ``sdt dataset inspect FILE``."""
+    reader = reader_for(file, readers)
+    return reader, list(reader.scan(Path(file), **options))
 
 
-def ide_rate(file: Path, variable: str | None) -> float:
-    """The rate of an IDE row's signal, measured from its timestamps."""
-    return _ide(file, variable).rate_hz
+def probe_signal(
+    file: Path, variable: str | None, readers: Sequence[Any] | None = None, **options: Any
+) -> tuple[Any, SignalInfo]:
+    """(reader, the signal a manifest row names), reading as little as the format allows."""
+    reader = reader_for(file, readers)
+    return reader, reader.probe(Path(file), variable, **options)
 
 
 def signal_shape(file: Path, variable: str | None) -> tuple[tuple[int, int], str | None]:
-    """((n_acquisitions, n_samples), note) of a signal file, reading as little as possible.
-
-    ``note`` says which time column of a CSV is dropped (None otherwise). A
-    CSV is parsed in full (its shape depends on its header and time column).
-    """
-    suffix = file.suffix.lower()
-    if suffix == ".npy":
-        return _orient(file, _load_npy(file, mmap_mode="r").shape), None
-    if suffix == ".mat":
-        return _orient(file, _mat_variable(file, variable)[1]), None
-    if suffix == ".csv":
-        parsed = read_csv_signal(file, variable)
-        return parsed.data.shape, parsed.note  # type: ignore[return-value]
-    if suffix == ".ide":
-        read = _ide(file, variable)
-        return (1, read.values.shape[1]), read.note
-    raise DataFileError(f"{file}: unsupported file type {suffix!r}; use {', '.join(SUFFIXES)}")
+    """((n_acquisitions, n_samples), note) of a signal file, through its reader."""
+    info = probe_signal(file, variable)[1]
+    return info.shape, info.note
 
 
-def read_signal(file: Path, variable: str | None) -> np.ndarray:
+def read_signal(file: Path, variable: str | None, **options: Any) -> np.ndarray:
     """The samples of a signal file as float64 (n_acquisitions, n_samples), all finite."""
-    suffix = file.suffix.lower()
-    if suffix == ".npy":
-        data = _load_npy(file)
-    elif suffix == ".mat":
-        import scipy.io
-
-        name, _ = _mat_variable(file, variable)
-        try:
-            data = scipy.io.loadmat(file, variable_names=[name])[name]
-        except OSError as exc:
-            raise DataFileError(f"{file}: cannot read ({exc.strerror or brief(exc)})") from None
-        except (ValueError, NotImplementedError, TypeError) as exc:
-            raise DataFileError(f"{file}: not a readable MATLAB file ({brief(exc)})") from None
-    elif suffix == ".csv":
-        return read_csv_signal(file, variable).data  # every value checked finite
-    elif suffix == ".ide":
-        return _finite(file, np.ascontiguousarray(_ide(file, variable).values), "sample", 0)
-    else:
-        raise DataFileError(f"{file}: unsupported file type {suffix!r}; use {', '.join(SUFFIXES)}")
-    data = np.asarray(_real(file, np.asarray(data)), dtype=np.float64)
-    _orient(file, data.shape)  # rejects 0-D and >2-D arrays
-    if data.ndim == 2 and 1 in data.shape:
-        data = data.reshape(-1)
-    if data.ndim == 1:
-        data = data[None, :]
-    elif data.shape[0] > data.shape[1]:
-        data = data.T
-    return _finite(file, np.ascontiguousarray(data), "sample", 0)
-
-
-def _finite(file: Path, data: np.ndarray, unit: str, offset: int) -> np.ndarray:
-    bad = ~np.isfinite(data)
-    if bad.any():
-        acq, sample = np.argwhere(bad)[0]
-        raise DataFileError(
-            f"{file}: acquisition {acq}, {unit} {sample + offset}: "
-            f"non-finite value {data[acq, sample]!r}"
-        )
-    return data
+    return reader_for(file).read(Path(file), variable, **options)

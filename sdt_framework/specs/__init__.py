@@ -6,7 +6,7 @@ a plugin is an error rather than a silently ignored setting. Each spec carries
 from the content hash) and a ``source`` reference (datasheet, paper, URL).
 
 One module per kind: :mod:`.base` (:class:`Spec`), :mod:`.sensor`,
-:mod:`.features`, :mod:`.classifier`, :mod:`.dataset`, and :mod:`.stage_use`
+:mod:`.features`, :mod:`.classifier`, :mod:`.dataset`, :mod:`.reader`, and :mod:`.stage_use`
 (a profile's extra stages and tolerances, as data). This package re-exports
 them, so ``from sdt_framework.specs import SensorSpec`` is the import to use.
 """
@@ -19,6 +19,7 @@ from .classifier import ClassifierSpec
 from .dataset import DatasetSpec
 from .features import DTYPE_BYTES as DTYPE_BYTES
 from .features import FeatureBand, FeatureSetSpec
+from .reader import ReaderSpec
 from .sensor import AXIS_FIELDS as AXIS_FIELDS
 from .sensor import MODE_SUFFIX as MODE_SUFFIX
 from .sensor import NATIVE as NATIVE
@@ -32,6 +33,7 @@ __all__ = [
     "DatasetSpec",
     "FeatureBand",
     "FeatureSetSpec",
+    "ReaderSpec",
     "SensorSpec",
     "Spec",
     "StageUse",

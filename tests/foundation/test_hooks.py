@@ -169,3 +169,30 @@ def test_hook_register_stages():
 
     y, _ = degrade(np.ones(100), 100.0, sensor)
     assert np.array_equal(y, np.full(100, 3.0))
+
+
+def test_hook_register_signal_readers(tmp_path):
+    from sdt_framework.data.readers import SignalInfo
+    from sdt_framework.data.signal_files import reader_for
+    from sdt_framework.specs import ReaderSpec
+
+    def scan(path):
+        return [SignalInfo(None, 1, 3, 100.0, "g", "header")]
+
+    spec = ReaderSpec(
+        name="three",
+        label="THREE",
+        suffixes=(".three",),
+        sniff=lambda head: head.startswith(b"3"),
+        scan=scan,
+        probe=lambda path, variable: scan(path)[0],
+        read=lambda path, variable: np.ones((1, 3)),
+    )
+    registry = build_registry(
+        entry_points=False, plugins=[plugin_with("register_signal_readers", spec)]
+    )
+    assert registry.signal_reader("three").plugin == "p_register_signal_readers"
+    unnamed = tmp_path / "recording"
+    unnamed.write_bytes(b"3 three samples")
+    reader = reader_for(unnamed, registry.signal_readers())  # by its first bytes
+    assert reader.read(unnamed, None).tolist() == [[1.0, 1.0, 1.0]]

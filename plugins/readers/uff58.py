@@ -1,0 +1,136 @@
+"""Universal File Format dataset 58 (ASCII and binary 58b) through pyuff.
+
+Simcenter Testlab, ME'scope and many modal tools export time histories as
+dataset 58: one function per dataset, its abscissa increment (the sample
+period), its ordinate units label. Each time response (function type 1) is a
+signal named by its position among the file's datasets 58 (``1``, ``2``...);
+its rate is ``1 / abscissa_inc``, which UFF stores with 6 significant digits,
+so a manifest rate may differ from it by :data:`UFF_RATE_TOLERANCE`. A
+spectrum, an FRF or unevenly spaced data is refused by name; so is a file
+that does not end with a dataset's closing ``-1`` line (a copy cut short:
+pyuff would silently read only the complete datasets before the cut).
+"""
+
+from __future__ import annotations
+
+import functools
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from sdt_framework import hookimpl
+from sdt_framework.data.readers import SignalInfo, as_acquisitions, pick, rate_from_increment
+from sdt_framework.data.recording import DataFileError
+from sdt_framework.data.tokens import brief
+from sdt_framework.specs import ReaderSpec
+
+#: 6 significant digits of an increment (UFF's E13.5 field): 1/2 unit in the 6th digit
+UFF_RATE_TOLERANCE = 1e-5
+#: function types of UFF dataset 58 record 6 (Universal File Format, dataset 58)
+FUNCTION_TYPES = {0: "general", 1: "time response", 2: "auto spectrum", 3: "cross spectrum",
+                  4: "frequency response function", 5: "transmissibility", 6: "coherence",
+                  9: "power spectral density"}  # fmt: skip
+
+
+def _ends_complete(path: Path) -> bool:
+    size = path.stat().st_size
+    with open(path, "rb") as handle:
+        handle.seek(max(0, size - 64))
+        tail = handle.read().rstrip()
+    return tail.endswith(b"-1") and tail[:-2][-1:] in (b" ", b"\n", b"\r", b"")
+
+
+@functools.lru_cache(maxsize=4)
+def _sets(path: str, mtime_ns: int, size: int) -> tuple[tuple[int, ...], tuple[dict, ...]]:
+    """(every dataset type, the datasets 58) of a file, read once per version of it."""
+    import pyuff
+
+    file = Path(path)
+    if size == 0 or not _ends_complete(file):
+        raise DataFileError(
+            f"{file}: truncated: the file does not end with a dataset's closing '-1' line "
+            f"({size:,} bytes); copy it from the measurement system again"
+        )
+    try:
+        uff = pyuff.UFF(path)
+        types = tuple(int(t) for t in uff.get_set_types())
+        index = [i for i, t in enumerate(types) if t == 58]
+        found = tuple(uff.read_sets(i) for i in index) if index else ()
+    except Exception as exc:  # pyuff raises bare Exception on damaged datasets
+        raise DataFileError(f"{file}: not a readable UFF file (pyuff: {brief(exc)})") from None
+    if not found:
+        held = ", ".join(str(t) for t in sorted(set(types))) or "none"
+        raise DataFileError(
+            f"{file}: holds no dataset 58 (time history); its datasets are {held}; "
+            f"export the measured functions as dataset 58"
+        )
+    return types, found
+
+
+def _datasets(path: Path) -> tuple[dict, ...]:
+    try:
+        stat = path.stat()
+    except OSError as exc:
+        raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
+    return _sets(str(path), stat.st_mtime_ns, stat.st_size)[1]
+
+
+def _units(item: dict[str, Any]) -> str | None:
+    label = str(item.get("ordinate_axis_units_lab", "")).strip()
+    return None if label.upper() in ("", "NONE") else label
+
+
+def _info(path: Path, number: int, item: dict[str, Any]) -> SignalInfo:
+    kind = int(item.get("func_type", 0))
+    if kind != 1:
+        raise DataFileError(
+            f"{path}: dataset 58 #{number} is a {FUNCTION_TYPES.get(kind, f'type {kind}')} "
+            f"(function type {kind}), not a time response (type 1); export the time history"
+        )
+    if int(item.get("abscissa_spacing", 1)) != 1:
+        raise DataFileError(f"{path}: dataset 58 #{number} is unevenly spaced; export it evenly")
+    rate = rate_from_increment(path, item.get("abscissa_inc"), f"dataset 58 #{number} abscissa_inc")
+    points = int(item.get("num_pts", 0))
+    if len(item["data"]) != points:
+        raise DataFileError(
+            f"{path}: dataset 58 #{number} declares {points:,} points and holds "
+            f"{len(item['data']):,}; the file is damaged"
+        )
+    label = f"{item.get('id1', '')} node {item.get('rsp_node')} dir {item.get('rsp_dir')}"
+    return SignalInfo(str(number), 1, points, rate, _units(item), "abscissa_inc",
+                      UFF_RATE_TOLERANCE, label.strip())  # fmt: skip
+
+
+def scan(path: Path) -> list[SignalInfo]:
+    """Every dataset 58, numbered from 1."""
+    return [_info(path, n, item) for n, item in enumerate(_datasets(path), start=1)]
+
+
+def probe(path: Path, variable: str | None) -> SignalInfo:
+    """Dataset 58 number ``variable``, or the file's only one."""
+    return pick(path, scan(path), variable)
+
+
+def read(path: Path, variable: str | None) -> np.ndarray:
+    """float64 (1, n_samples), all finite."""
+    info = probe(path, variable)
+    data = np.asarray(_datasets(path)[int(str(info.variable)) - 1]["data"])
+    return as_acquisitions(path, data)
+
+
+@hookimpl
+def register_signal_readers(register):
+    """Register the UFF58 reader."""
+    register(
+        ReaderSpec(
+            name="uff58",
+            label="UFF58",
+            suffixes=(".uff", ".unv", ".uf"),
+            description="Universal File Format dataset 58 time histories, ASCII or binary (pyuff)",
+            source="pyuff (MIT); UFF dataset 58 specification",
+            scan=scan,
+            probe=probe,
+            read=read,
+        )
+    )

@@ -1,0 +1,113 @@
+"""``sdt dataset manifest`` and ``sdt dataset inspect FILE``: recordings as they come off a DAQ.
+
+Both go through the registered signal readers (``sdt plugins list`` shows
+them): a format a plugin adds is inspected and put in a manifest like a
+built-in one.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ..io import atomic_write_text
+from .common import console, err_console, print_json, registry, table
+
+__all__ = ["inspect_file", "manifest"]
+
+SHOWN_UNMATCHED = 20
+
+
+def inspect_file(ctx: typer.Context, path: str, as_json: bool) -> None:
+    """Every signal of one file: variable, rate and where it comes from, units, duration."""
+    from ..data.signal_files import scan_file
+    from .guards import os_errors
+
+    with os_errors(path):
+        reader, infos = scan_file(Path(path), registry(ctx).signal_readers())
+    for note in dict.fromkeys(i.note for i in infos if i.note):
+        err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
+    if as_json:
+        print_json({"path": path, "format": reader.label, "reader": reader.name,
+                    "signals": [i.as_dict() for i in infos]})  # fmt: skip
+        return
+    rows = [
+        [
+            "-" if i.variable is None else i.variable,
+            i.label or "-",
+            i.n_acquisitions,
+            i.n_samples,
+            "-" if i.rate_hz is None else f"{i.rate_hz:.6g} ({i.rate_from})",
+            i.units or "-",
+            "-" if i.duration_s is None else f"{i.duration_s:.4g}",
+        ]
+        for i in infos
+    ]
+    table(
+        f"{path}: {reader.label}, {len(infos)} signal{'' if len(infos) == 1 else 's'}",
+        ["variable", "label", "acquisitions", "samples", "rate Hz", "units", "duration s"],
+        rows,
+    )
+
+
+def manifest(
+    ctx: typer.Context,
+    folder: Annotated[Path, typer.Argument(help="Root folder of the recordings.")],
+    pattern: Annotated[
+        str,
+        typer.Option(
+            "--pattern",
+            help="Path template below FOLDER with {machine} {speed} {condition} {severity} "
+            "{run} {channel}, e.g. '{machine}/{condition} {severity}/{run}/{channel}.tdms'.",
+        ),
+    ],
+    out: Annotated[Path, typer.Option("--out", help="Manifest to write (.csv).")],
+    rate_hz: float | None = typer.Option(
+        None, "--rate-hz", help="Rate of files that hold none (CSV, NPY, MAT), Hz."
+    ),
+    full_scale_g: float | None = typer.Option(
+        None, "--full-scale-g", help="Acceleration at full scale of integer WAV files, g."
+    ),
+    overwrite: bool = typer.Option(False, "--overwrite", help="Replace an existing --out."),
+) -> None:
+    """Build a manifest from a folder tree: labels from the paths, rate and units from the files.
+
+    Each file matching --pattern gives one row per signal it holds. With {channel}
+    in the pattern a file's signals are that channel's acquisitions; without it,
+    each signal is a channel named by the file. A severity of '-' is healthy.
+    Files that do not match are listed with the reason. A DAQ campaign's tree
+    reads with a pattern such as '{machine}/{condition} {severity}/{run}/{channel}.tdms'.
+
+    Example:
+
+      sdt dataset manifest tests/data/readers --pattern '{condition}_{run}.uff' --out uff.csv
+    """
+    from ..data.manifest_build import build_manifest, manifest_csv
+    from .guards import check_output_file, os_errors
+
+    check_output_file(out, "--out", (".csv",), overwrite=overwrite)
+    with os_errors(str(folder)):
+        built = build_manifest(
+            folder,
+            pattern,
+            out.parent,
+            rate_hz=rate_hz,
+            full_scale_g=full_scale_g,
+            readers=registry(ctx).signal_readers(),
+        )
+    atomic_write_text(out, manifest_csv(built))
+    for path, why in built.unmatched[:SHOWN_UNMATCHED]:
+        err_console.print(f"not matched: {path}: {why}", markup=False, highlight=False,
+                          soft_wrap=True)  # fmt: skip
+    if len(built.unmatched) > SHOWN_UNMATCHED:
+        err_console.print(f"not matched: {len(built.unmatched) - SHOWN_UNMATCHED} more files",
+                          markup=False, highlight=False)  # fmt: skip
+    recordings = {(r["machine"], r["recording_id"], r["channel"]) for r in built.rows}
+    console.print(
+        f"wrote {out}: {len(built.rows)} rows from {built.files} files ({len(recordings)} "
+        f"recordings); {len(built.unmatched)} files not matched",
+        highlight=False,
+        soft_wrap=True,
+    )

@@ -1,0 +1,66 @@
+"""ReaderSpec: a signal file format, registered by a plugin through ``register_signal_readers``.
+
+A reader says which files it reads (``suffixes``, and a ``sniff`` of their
+first bytes where a suffix is shared or absent) and provides three functions:
+
+- ``scan(path, **options)`` -> list of :class:`~sdt_framework.data.readers.SignalInfo`,
+  one per signal the file holds, reading headers only where the format allows
+  (``sdt dataset inspect FILE``, ``sdt dataset manifest``);
+- ``probe(path, variable, **options)`` -> the one ``SignalInfo`` a manifest row reads
+  (``variable`` None: the file's only signal);
+- ``read(path, variable, **options)`` -> float64 (n_acquisitions, n_samples), all
+  finite, in the units ``probe`` reports.
+
+``options`` are the reader's own manifest columns (``full_scale_g`` for integer
+WAV files), listed in ``options`` so that the manifest knows them.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any, ClassVar
+
+from pydantic import Field, field_validator
+
+from .base import Spec
+
+__all__ = ["ReaderSpec"]
+
+
+class ReaderSpec(Spec):
+    """A signal file format: suffixes, a sniffing check, and scan/probe/read functions."""
+
+    kind: ClassVar[str] = "signal reader"
+    _provenance: ClassVar[frozenset[str]] = frozenset(
+        {"plugin", "distribution", "sniff", "scan", "probe", "read"}
+    )
+
+    label: str = Field(description="Format name shown to users (``TDMS``, ``UFF58``).")
+    suffixes: tuple[str, ...] = Field(description="File suffixes, lower case with the dot.")
+    options: tuple[str, ...] = Field(
+        default=(), description="Manifest columns the reader takes as keyword options."
+    )
+    sniff: Callable[[bytes], bool] | None = Field(
+        default=None,
+        exclude=True,
+        description="sniff(first 1024 bytes) -> whether this reader reads the file.",
+    )
+    scan: Callable[..., Any] = Field(exclude=True, description="scan(path, **options).")
+    probe: Callable[..., Any] = Field(exclude=True, description="probe(path, variable, **options).")
+    read: Callable[..., Any] = Field(exclude=True, description="read(path, variable, **options).")
+
+    @field_validator("suffixes")
+    @classmethod
+    def _check_suffixes(cls, value: tuple[str, ...]) -> tuple[str, ...]:
+        for suffix in value:
+            if not (suffix.startswith(".") and suffix == suffix.lower() and len(suffix) > 1):
+                raise ValueError(f"suffix {suffix!r}: give it lower case with its dot ('.tdms')")
+        return value
+
+    def content_dict(self) -> dict[str, Any]:
+        """Behaviour-defining fields plus the functions' qualified names."""
+        data = super().content_dict()
+        for key in ("scan", "probe", "read"):
+            func = getattr(self, key)
+            data[key] = f"{func.__module__}:{func.__qualname__}"
+        return data
