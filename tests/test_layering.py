@@ -27,6 +27,7 @@ ALLOWED: dict[str, set[str]] = {
     "dtypes": set(),
     "seeding": set(),
     "hookspecs": set(),
+    "labels": set(),
     "inputs": {"errors"},
     "io": {"errors"},
     "toml_files": {"errors", "inputs"},
@@ -66,6 +67,7 @@ ALLOWED: dict[str, set[str]] = {
     "report": _IO
     | {
         "bench",
+        "labels",
         "chain",
         "data",
         "edge",
@@ -79,6 +81,7 @@ ALLOWED: dict[str, set[str]] = {
     "cli": _IO
     | {
         "bench",
+        "labels",
         "chain",
         "data",
         "edge",
