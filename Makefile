@@ -20,8 +20,10 @@ $(STAMP): pyproject.toml plugins/sensors-catalog/pyproject.toml | $(BIN)/python
 run: $(STAMP)
 	$(BIN)/sdt benchmark
 
+# both cores: one pytest-xdist worker each; a file stays on one worker, so its module
+# fixtures (small benchmarks, results folders) are built once
 test: $(STAMP) browser
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n 2 --dist loadfile
 
 # the slow documented commands (full benchmarks, sweeps, calibrations) of README.md and docs/*.md
 doccheck: $(STAMP)

@@ -6,6 +6,15 @@ whole module: ``pytestmark = pytest.mark.catalog``); it is skipped, saying
 why, when the catalogue is not installed. ``pytest -m "not catalog"`` runs the
 rest.
 
+Every test sees the same terminal, whoever runs the suite (a terminal of any
+width, CI, a pytest-xdist worker, a shell that exports ``COLUMNS``): 80
+columns, what a pipe gets, unless the test names another width for its own
+command (``CliRunner().invoke(..., env={"COLUMNS": ...})`` or a child's
+environment). rich reads ``COLUMNS`` once when a console is built and then keeps
+it, so the ``sdt`` consoles must be built with no ``COLUMNS`` set (they then read
+it at each print): ``pytest_configure`` removes it before any test module
+imports the command line, and a session fixture sets 80 for the tests.
+
 Following flake8's approach, a test that needs a third-party plugin writes a
 module and a ``*.dist-info`` folder with ``entry_points.txt`` into a temporary
 directory on ``sys.path``; importlib.metadata then finds it exactly as it would
@@ -16,6 +25,7 @@ from __future__ import annotations
 
 import importlib
 import importlib.util
+import os
 import sys
 import textwrap
 from collections.abc import Callable, Iterator
@@ -27,7 +37,6 @@ from sdt_plugins.sensors import adxl357 as builtin_adxl357
 from sdt_plugins.sensors import wilcoxon_786b10 as builtin_reference
 
 from sdt_framework import build_registry
-from sdt_framework.cli.main import main
 from sdt_framework.specs import SensorSpec
 
 FakeDist = Callable[..., Path]
@@ -35,6 +44,9 @@ CATALOG_MISSING = "the sensor catalogue is not installed: pip install -e plugins
 
 
 def pytest_configure(config: pytest.Config) -> None:
+    assert "sdt_framework.cli.common" not in sys.modules, "conftest must not import the CLI"
+    os.environ.pop("COLUMNS", None)
+    os.environ.pop("LINES", None)
     config.addinivalue_line(
         "markers", "catalog: needs the separately installed sensor catalogue (sdt_sensors_catalog)"
     )
@@ -48,6 +60,14 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     for item in items:
         if item.get_closest_marker("catalog") is not None:
             item.add_marker(skip)
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _terminal_of_80_columns() -> Iterator[None]:
+    """``COLUMNS=80`` for every test and the commands it starts (see the module's docstring)."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv("COLUMNS", "80")
+        yield
 
 
 @pytest.fixture
@@ -84,6 +104,8 @@ def registry():
 @pytest.fixture
 def sdt_main(monkeypatch, capsys):
     """``sdt_main(*args)``: ``main()`` in this process: (exit status, stdout, stderr)."""
+
+    from sdt_framework.cli.main import main
 
     def run(*args: str) -> tuple[int, str, str]:
         monkeypatch.setattr(sys, "argv", ["sdt", *args])

@@ -27,6 +27,7 @@ ALLOWED: dict[str, set[str]] = {
     "dtypes": set(),
     "seeding": set(),
     "hookspecs": set(),
+    "labels": set(),
     "inputs": {"errors"},
     "io": {"errors"},
     "reader_table": {"errors"},
@@ -69,6 +70,7 @@ ALLOWED: dict[str, set[str]] = {
     "report": _IO
     | {
         "bench",
+        "labels",
         "chain",
         "data",
         "edge",
@@ -83,6 +85,7 @@ ALLOWED: dict[str, set[str]] = {
     "cli": _IO
     | {
         "bench",
+        "labels",
         "chain",
         "data",
         "edge",

@@ -36,6 +36,7 @@ from rich.measure import Measurement
 from rich.table import Table
 from rich.text import Text
 
+from ..labels import middle_cut
 from ..registry import Registry, build_registry
 from .visible import SafeConsole, visible
 
@@ -61,12 +62,6 @@ console: Console = SafeConsole(markup=False, emoji=False)
 err_console: Console = SafeConsole(stderr=True, markup=False, emoji=False)
 
 
-def _middle(text: str, keep: int) -> str:
-    """``text`` as its first and last ``keep // 2`` characters and how long it was."""
-    half = keep // 2
-    return f"{text[:half]}…{text[-half:]} ({len(text):,} characters)"
-
-
 def shorten_labels(message: str) -> str:
     """``message`` for the terminal: over-long labels and the message itself cut in the middle.
 
@@ -77,8 +72,10 @@ def shorten_labels(message: str) -> str:
     """
     if len(message) <= LABEL_LIMIT:
         return message
-    message = _LONG_RUN.sub(lambda found: _middle(found[0], 120), message)
-    return message if len(message) <= MESSAGE_LIMIT else _middle(message, MESSAGE_LIMIT - 40)
+    message = _LONG_RUN.sub(lambda found: middle_cut(found[0], 60, count=True), message)
+    if len(message) <= MESSAGE_LIMIT:
+        return message
+    return middle_cut(message, (MESSAGE_LIMIT - 40) // 2, count=True)
 
 
 def print_error(message: str, label: str = "error:", style: str = "bold red") -> None:

@@ -18,6 +18,7 @@ matplotlib.use("Agg")
 from matplotlib.figure import Figure
 
 from ..io import atomic_path
+from ..labels import middle_cut
 
 __all__ = [
     "DPI",
@@ -48,8 +49,7 @@ def figure_label(text: object, limit: int = LABEL_LIMIT) -> str:
     text = str(text)
     if len(text) <= limit:
         return text
-    half = (limit - 1) // 2
-    return f"{text[:half]}…{text[-half:]}"
+    return middle_cut(text, (limit - 1) // 2)
 
 
 def sensor_colors(sensors: Sequence[str], reference: str | None) -> dict[str, str]:

@@ -15,7 +15,7 @@ from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_
 from ..errors import SDTError
 from ..inputs import require_regular_file
 from .pair_toml import is_pair_toml, load_toml_pair
-from .signals import Pair, Signal, chosen_axes, digest
+from .signals import Pair, Signal, chosen_axes, digest, unit_mistake
 
 __all__ = ["Pair", "Signal", "load_pair"]
 
@@ -116,16 +116,14 @@ def _checked(pair: Pair) -> Pair:
     if not ratio <= DURATION_RATIO:
         raise SDTError(
             f"{path}: {_span(ref)}; {_span(dev)}: one recording's two sides differ "
-            f"{ratio:.4g}-fold in length; a time column in ms or a rate_hz in kHz? (time "
-            f"columns are in s, rate_hz in Hz)"
+            f"{ratio:.4g}-fold in length; {unit_mistake()}"
         )
     lo, hi = RATE_RANGE_HZ
     for side in (ref, dev):
         if not lo <= side.rate_hz <= hi:
             raise SDTError(
                 f"{path}: {side.label} runs at {side.rate_hz:.6g} Hz, outside {lo:g} Hz to "
-                f"{hi:.0e} Hz (the twin's bands start at 10 Hz); time columns are in s, "
-                f"rate_hz in Hz"
+                f"{hi:.0e} Hz (the twin's bands start at 10 Hz); {unit_mistake()}"
             )
     start = max(ref.start_s, dev.start_s)
     end = min(ref.end_s, dev.end_s)

@@ -12,7 +12,14 @@ import numpy as np
 
 from ..errors import SDTError
 
-__all__ = ["Pair", "Signal", "digest"]
+__all__ = ["Pair", "Signal", "digest", "unit_mistake"]
+
+
+def unit_mistake() -> str:
+    """The likely cause a check names when a rate cannot be right (a pair's sides differing
+    in length or outside the plausible rates, a device off its part's rate): one wording
+    for every such check."""
+    return "a time column in ms or a rate_hz in kHz? (time columns are in s, rate_hz in Hz)"
 
 
 @dataclass(frozen=True)

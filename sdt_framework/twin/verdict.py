@@ -31,6 +31,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..specs import SensorSpec
+from .signals import unit_mistake
 from .spectra import TONE_FACTOR
 
 __all__ = [
@@ -69,8 +70,7 @@ def rate_mismatch(sensor: SensorSpec, rate_hz: float) -> str | None:
     return (
         f"the device runs at {rate_hz:.4g} Hz, {how} than {sensor.name}'s {nominal:g} Hz and "
         f"off every power-of-two setting of it by more than {100 * RATE_TOLERANCE:g} %: "
-        f"another part, or a wrong rate (timestamps in ms read as s, a rate_hz off by a "
-        f"factor); check --device-channel, the pair's time column or rate_hz"
+        f"another part (check --device-channel), or {unit_mistake()}"
     )
 
 

@@ -8,6 +8,7 @@ annotated ``skip`` name why they cannot run here and are listed there.
 
 from __future__ import annotations
 
+import os
 import sys
 from concurrent.futures import Future, ThreadPoolExecutor
 from pathlib import Path
@@ -33,7 +34,9 @@ def verdicts(request, tmp_path_factory) -> dict[str, Future]:
     """Each selected document's fast commands, run once, two documents at a time.
 
     Documents are independent (one sandbox each), so on the 2-core machine two
-    run side by side; each test waits for its own document's verdicts.
+    run side by side; each test waits for its own document's verdicts. Under
+    pytest-xdist (``make test``: one worker per core) the other workers keep
+    the other cores busy, so this worker runs its documents one at a time.
     """
     cache = tmp_path_factory.mktemp("doccheck-cache")
     # other tests name a parameter "command" too (a string there): keep this file's only
@@ -43,7 +46,8 @@ def verdicts(request, tmp_path_factory) -> dict[str, Future]:
         for p in params
         if p and isinstance(p.params.get("command"), Command)
     }
-    pool = ThreadPoolExecutor(max_workers=2)
+    workers = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
+    pool = ThreadPoolExecutor(max_workers=max(1, 2 // workers))
     request.addfinalizer(pool.shutdown)
 
     def run(doc: str) -> dict[str, Result]:

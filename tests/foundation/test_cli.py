@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 
 import pytest
 import typer
@@ -12,18 +10,9 @@ from typer.testing import CliRunner
 
 from sdt_framework.cli.main import app
 
+from ..helpers import run_sdt
+
 runner = CliRunner()
-
-
-def sdt(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
-    """Run the real `sdt` entry point in a subprocess (as a user would)."""
-    return subprocess.run(
-        [sys.executable, "-m", "sdt_framework", *args],
-        capture_output=True,
-        text=True,
-        env=env,
-        check=False,
-    )
 
 
 def json_of(*args: str) -> list | dict:
@@ -100,7 +89,7 @@ def test_sensors_show_prints_tolerances_and_stages_readably(tmp_path):
 
 
 def test_unknown_sensor_is_one_line_without_traceback():
-    result = sdt("sensors", "show", "adxl35")
+    result = run_sdt("sensors", "show", "adxl35")
     assert result.returncode == 2
     assert "Traceback" not in result.stderr
     lines = [line for line in result.stderr.splitlines() if line.strip()]

@@ -9,7 +9,6 @@ from the README's own blocks and pip-installed into a temporary target folder.
 from __future__ import annotations
 
 import json
-import os
 import re
 import subprocess
 import sys
@@ -19,6 +18,8 @@ import numpy as np
 import pytest
 
 from sdt_framework.conformance import ConformanceError, check_plugin
+
+from ..helpers import run_sdt
 
 README = Path(__file__).resolve().parents[2] / "README.md"
 
@@ -55,15 +56,11 @@ def site(package: Path, tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def _sdt(*args: str, site: Path, tmp: Path) -> subprocess.CompletedProcess[str]:
-    env = {k: v for k, v in os.environ.items() if k not in {"SDT_PLUGINS", "SDT_BLOCK_PLUGINS"}}
-    env |= {"PYTHONPATH": str(site), "SDT_CACHE_DIR": str(tmp / "cache")}
-    return subprocess.run(
-        [sys.executable, "-m", "sdt_framework", *args],
-        capture_output=True,
-        text=True,
-        env=env,
-        check=False,
+    return run_sdt(
+        *args,
         cwd=tmp,
+        env={"PYTHONPATH": str(site), "SDT_CACHE_DIR": str(tmp / "cache")},
+        without={"SDT_PLUGINS", "SDT_BLOCK_PLUGINS"},
     )
 
 

@@ -7,13 +7,14 @@ from __future__ import annotations
 import os
 import signal
 import subprocess
-import sys
 from pathlib import Path
 from typing import Any
 
 import pytest
 
 from sdt_framework.bench.config import BenchmarkConfig
+
+from ..helpers import run_sdt
 
 #: Motor-2 only (15 runs), 1.5 s acquisitions (2 windows per channel), 2 channels, 1 sensor.
 SMALL: dict[str, Any] = {
@@ -72,14 +73,7 @@ def sdt(tmp_path):
     """``sdt(*args, env=...)``: run the real command; the cache goes to the test's folder."""
 
     def run(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
-        environ = {**os.environ, "SDT_CACHE_DIR": str(tmp_path / "cache"), **(env or {})}
-        return subprocess.run(
-            [sys.executable, "-m", "sdt_framework", *args],
-            capture_output=True,
-            text=True,
-            env=environ,
-            check=False,
-        )
+        return run_sdt(*args, env={"SDT_CACHE_DIR": str(tmp_path / "cache"), **(env or {})})
 
     return run
 

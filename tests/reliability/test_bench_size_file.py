@@ -11,25 +11,17 @@ from __future__ import annotations
 
 import numpy as np
 
-HEADER = "path,sampling_rate_hz,machine,condition,severity,recording_id,channel\n"
+from ..helpers import six_recordings
+
 SAMPLES = 6_250_000_000  # float64: 50 GB
 
 
 def test_a_recording_too_large_for_memory_is_named_with_its_size(sdt, tmp_path):
-    rng = np.random.default_rng(0)
-    lines = [HEADER]
-    for condition, gain in (("healthy", 1.0), ("fault", 2.0)):
-        for index in range(3):
-            name = f"{condition}{index}"
-            np.save(tmp_path / f"{name}.npy", gain * rng.normal(size=40_000))
-            severity = index + 1 if gain > 1 else ""
-            lines.append(f"{name}.npy,20000,m,{condition},{severity},{name},ch1\n")
+    manifest = six_recordings(tmp_path)
     np.lib.format.open_memmap(  # replaces healthy0 with a sparse 50 GB file
         tmp_path / "healthy0.npy", mode="w+", dtype=np.float64, shape=(1, SAMPLES)
     ).flush()
     assert (tmp_path / "healthy0.npy").stat().st_size > 50e9
-    manifest = tmp_path / "m.csv"
-    manifest.write_text("".join(lines))
     out = tmp_path / "out"
 
     done = sdt("benchmark", "--data", str(manifest), "--quick", "--sensors", "adxl345",

@@ -13,25 +13,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-HEADER = "path,sampling_rate_hz,machine,condition,severity,recording_id,channel\n"
+from ..helpers import six_recordings
 
 
 def _manifest(folder: Path, first: np.ndarray | None) -> Path:
     """Six 2 s recordings, two classes; the first replaced by ``first`` (None: missing)."""
-    rng = np.random.default_rng(0)
-    lines = [HEADER]
-    for condition, gain in (("healthy", 1.0), ("fault", 2.0)):
-        for index in range(3):
-            name = f"{condition}{index}"
-            np.save(folder / f"{name}.npy", gain * rng.normal(size=40_000))
-            lines.append(
-                f"{name}.npy,20000,m,{condition},{index + 1 if gain > 1 else ''},{name},ch1\n"
-            )
+    manifest = six_recordings(folder)
     (folder / "healthy0.npy").unlink()
     if first is not None:
         np.save(folder / "healthy0.npy", first)
-    manifest = folder / "m.csv"
-    manifest.write_text("".join(lines), encoding="utf-8")
     return manifest
 
 

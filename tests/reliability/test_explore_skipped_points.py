@@ -19,7 +19,10 @@ import pytest
 
 from sdt_framework.data.synth_dataset import GENERATOR
 
-SWEEP = """
+from ..helpers import EXPLORE_BENCHMARK
+
+SWEEP = (
+    """
 [sweep]
 base = "adxl345"
 [sweep.axes]
@@ -27,15 +30,10 @@ sampling_rate_hz = { levels = [800, 40000] }
 full_scale_g = { levels = [16, 8] }
 [sweep.ties]
 digital_cutoff_hz = "0.4 * rate"
-[benchmark]
-dataset_options = { duration = 1.5 }
-classifiers = ["lr"]
-machines = ["Motor-2"]
-channels = ["ch1"]
-scenarios = ["interpolation"]
-repeats = 1
-jobs = 1
 """
+    + EXPLORE_BENCHMARK
+    + "jobs = 1\n"
+)
 
 
 def test_every_skipped_point_is_written_with_its_reason(sdt_main, tmp_path):

@@ -25,20 +25,12 @@ from pathlib import Path
 
 import numpy as np
 
-SMALL = """
-[benchmark]
-dataset_options = { duration = 1.5 }
-classifiers = ["lr"]
-machines = ["Motor-2"]
-channels = ["ch1"]
-scenarios = ["interpolation"]
-repeats = 1
-"""
+from ..helpers import EXPLORE_BENCHMARK
 
 
 def _sweep(folder: Path, sweep: str) -> Path:
     path = folder / "sweep.toml"
-    path.write_text(textwrap.dedent(sweep) + SMALL)
+    path.write_text(textwrap.dedent(sweep) + EXPLORE_BENCHMARK)
     return path
 
 

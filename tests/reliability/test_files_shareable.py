@@ -10,14 +10,12 @@ directory, and after the folder and its data are moved together.
 from __future__ import annotations
 
 import json
-import os
 import platform
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
-import numpy as np
+from ..helpers import run_sdt, six_recordings
 
 SHAREABLE = ("config.toml", "report.md", "report.html", "summary.json")
 
@@ -25,29 +23,11 @@ SHAREABLE = ("config.toml", "report.md", "report.html", "summary.json")
 def _manifest(folder: Path) -> Path:
     """Six 2 s noise recordings (two classes) and their manifest, paths relative to it."""
     folder.mkdir()
-    rng = np.random.default_rng(0)
-    lines = ["path,sampling_rate_hz,machine,condition,severity,recording_id,channel"]
-    for condition, gain in (("healthy", 1.0), ("fault", 2.0)):
-        for index in range(3):
-            name = f"{condition}{index}"
-            np.save(folder / f"{name}.npy", gain * rng.normal(size=40_000))
-            severity = index + 1 if condition == "fault" else ""
-            lines.append(f"{name}.npy,20000,m,{condition},{severity},{name},ch1")
-    manifest = folder / "manifest.csv"
-    manifest.write_text("\n".join(lines) + "\n", encoding="utf-8")
-    return manifest
+    return six_recordings(folder, "manifest.csv")
 
 
 def _sdt(*args: str, cwd: Path, cache: Path) -> subprocess.CompletedProcess[str]:
-    env = {**os.environ, "SDT_CACHE_DIR": str(cache)}
-    done = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", *args],
-        cwd=cwd,
-        env=env,
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    done = run_sdt(*args, cwd=cwd, env={"SDT_CACHE_DIR": str(cache)})
     assert done.returncode == 0, done.stderr
     return done
 

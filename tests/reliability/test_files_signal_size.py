@@ -17,11 +17,8 @@ honours): the refusal is hit whatever the machine has. The files are sparse
 
 from __future__ import annotations
 
-import os
 import re
-import resource
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -34,25 +31,15 @@ from sdt_framework.data.signal_sizes import (
     file_samples,
 )
 
+from ..helpers import run_sdt
+
 LIMIT = 3 * 2**30  # address space given to the command: enough to start, far from 9.6 GB
 SAMPLES = 1_200_000_000  # the issue's file: (1, 1.2e9) float64, 9.6 GB
 
 
-def _limited() -> None:
-    resource.setrlimit(resource.RLIMIT_AS, (LIMIT, LIMIT))
-
-
 def run_limited(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
     """``sdt ARGS`` as a user types it, under ``ulimit -v`` of 3 GiB."""
-    return subprocess.run(
-        [sys.executable, "-m", "sdt_framework", *args],
-        capture_output=True,
-        text=True,
-        cwd=cwd,
-        preexec_fn=_limited,
-        check=False,
-        env={**os.environ, "SDT_CACHE_DIR": str(cwd / "cache")},
-    )
+    return run_sdt(*args, cwd=cwd, env={"SDT_CACHE_DIR": str(cwd / "cache")}, memory_cap=LIMIT)
 
 
 @pytest.fixture(scope="module")

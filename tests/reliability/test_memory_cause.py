@@ -10,36 +10,22 @@ instead of taking the machine's memory.
 
 from __future__ import annotations
 
-import os
-import resource
 import subprocess
-import sys
 import textwrap
 from pathlib import Path
 from types import SimpleNamespace
 
 import pytest
 
+from ..helpers import run_sdt
 from .conftest import without_estimate
 
 CAP = 3 * 2**30
 
 
-def _capped() -> None:
-    resource.setrlimit(resource.RLIMIT_AS, (CAP, CAP))
-
-
 def _sdt(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(
-        [sys.executable, "-m", "sdt_framework", *args],
-        capture_output=True,
-        text=True,
-        cwd=cwd,
-        env={**os.environ, "SDT_CACHE_DIR": str(cwd / "cache")},
-        preexec_fn=_capped,
-        timeout=120,
-        check=False,
-    )
+    env = {"SDT_CACHE_DIR": str(cwd / "cache")}
+    return run_sdt(*args, cwd=cwd, env=env, memory_cap=CAP, timeout=120)
 
 
 @pytest.mark.skipif(not Path("/dev/zero").exists(), reason="needs /dev/zero")

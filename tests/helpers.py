@@ -1,0 +1,83 @@
+"""Helpers shared by tests in several folders (import as ``from ..helpers import ...``).
+
+- :func:`run_sdt`: ``sdt`` in a real process, as a user types it (exit status,
+  stdout and stderr exactly as printed), optionally under an address-space cap.
+- :func:`six_recordings`: a manifest of six short ``.npy`` recordings, two
+  classes, for tests that replace one of them with a bad file.
+- :data:`EXPLORE_BENCHMARK`: the smallest ``[benchmark]`` table a sweep file
+  can run (one machine, one channel, LR, one repetition, 1.5 s acquisitions).
+"""
+
+from __future__ import annotations
+
+import os
+import resource
+import subprocess
+import sys
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["EXPLORE_BENCHMARK", "MANIFEST_HEADER", "run_sdt", "six_recordings"]
+
+MANIFEST_HEADER = "path,sampling_rate_hz,machine,condition,severity,recording_id,channel\n"
+
+EXPLORE_BENCHMARK = """
+[benchmark]
+dataset_options = { duration = 1.5 }
+classifiers = ["lr"]
+machines = ["Motor-2"]
+channels = ["ch1"]
+scenarios = ["interpolation"]
+repeats = 1
+"""
+
+
+def _cap_address_space(limit: int) -> None:
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+
+def run_sdt(
+    *args: str,
+    cwd: Path | None = None,
+    env: Mapping[str, str] | None = None,
+    without: Iterable[str] = (),
+    memory_cap: int | None = None,
+    timeout: float | None = None,
+) -> subprocess.CompletedProcess[str]:
+    """``sdt ARGS`` in a child process; never raises on a non-zero exit.
+
+    The child's environment is this process's, less the names in ``without``,
+    updated with ``env``. ``memory_cap`` (bytes) caps the child's address space
+    (``ulimit -v``, which the framework's memory estimates honour), so a test of
+    a huge input is refused, or ends in a MemoryError, whatever the machine has.
+    """
+    environ = {k: v for k, v in os.environ.items() if k not in set(without)} | dict(env or {})
+    return subprocess.run(
+        [sys.executable, "-m", "sdt_framework", *args],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+        env=environ,
+        preexec_fn=None if memory_cap is None else lambda: _cap_address_space(memory_cap),
+        timeout=timeout,
+        check=False,
+    )
+
+
+def six_recordings(folder: Path, file_name: str = "m.csv") -> Path:
+    """``folder/file_name``: six 2 s recordings at 20 kHz (``healthy0..2``, ``fault0..2``, the
+    faults at twice the amplitude, severities 1-3), one machine ``m``, channel ``ch1``; the
+    ``.npy`` files beside it. Returns the manifest's path."""
+    rng = np.random.default_rng(0)
+    lines = [MANIFEST_HEADER]
+    for condition, gain in (("healthy", 1.0), ("fault", 2.0)):
+        for index in range(3):
+            name = f"{condition}{index}"
+            np.save(folder / f"{name}.npy", gain * rng.normal(size=40_000))
+            severity = index + 1 if gain > 1 else ""
+            lines.append(f"{name}.npy,20000,m,{condition},{severity},{name},ch1\n")
+    manifest = folder / file_name
+    manifest.write_text("".join(lines), encoding="utf-8")
+    return manifest
