@@ -72,8 +72,8 @@ class Cell:
 
 
 _L91 = (
-    "Energizer L91 capacity as quoted from its datasheet (electronicshopbest.blogspot.com, "
-    "2009; secondary)"
+    "Energizer L91 datasheet as quoted by electronicshopbest.blogspot.com (2009; secondary): "
+    "'the capacity of the Lithium AA cell (L91) is 3000mAh'"
 )
 CELLS: dict[str, Cell] = {
     c.name.lower(): c
