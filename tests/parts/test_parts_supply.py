@@ -35,10 +35,8 @@ def _check_table(figure: PartFigure) -> None:
         odr = float(options[-1])
         assert odr in rows, f"no printed row for ODR {odr:g} ({label})"
         row = rows[odr]
-        if len(keys) == 1:
-            cell = row[-1]  # the figure is the row's last column
-        else:
-            cell = row[figure.columns.index(options[0])]
+        # one key: the row's last column; 'mode,odr': the column of the mode
+        cell = row[-1] if len(keys) == 1 else row[figure.columns.index(options[0])]
         assert float(cell) * UNIT[figure.printed_unit] == value, (label, row)
 
 
