@@ -16,7 +16,6 @@ import numpy as np
 from ..edge import report_bytes
 from ..errors import SDTError
 from ..features import resolve_feature_set
-from ..parts import split_name
 from ..verdict import compare
 from .document import Block, Heading, Paragraph, Table
 from .load import ResultsFolder
@@ -50,7 +49,7 @@ def _losses(folder: ResultsFolder, margin: float) -> dict[str, str]:
 
 
 def _price(registry: Any, name: str) -> str:
-    base, _ = split_name(name)
+    base = name.split("[", 1)[0]  # a part's name without its mode
     for candidate, label in ((base, ""), (f"{base}-ds", f" (part {base}-ds)")):
         try:
             part = registry.part(candidate)
