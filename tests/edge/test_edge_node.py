@@ -6,6 +6,7 @@ import math
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from sdt_framework import SDTError
@@ -141,3 +142,29 @@ def test_node_bad_input_is_one_line_and_exit_2(args, message):
     assert result.returncode == 2
     lines = [line for line in result.stderr.splitlines() if line.strip()]
     assert len(lines) == 1 and lines[0].startswith(message), result.stderr
+
+
+def test_non_dominated_by_hand():
+    from sdt_framework.edge.life_objective import non_dominated
+
+    # (cost, -macro_f1, -life): c is dominated by a (cheaper, as good, longer life);
+    # b trades cost for life; d has no life (NaN): never on the front.
+    objectives = np.array(
+        [
+            [1.0, -0.80, -8.0],  # a
+            [2.0, -0.80, -9.0],  # b
+            [1.5, -0.80, -7.0],  # c
+            [0.5, -0.90, np.nan],  # d
+        ]
+    )
+    assert non_dominated(objectives).tolist() == [True, True, False, False]
+
+
+def test_point_lives_nan_where_no_supply(registry, paper8):
+    from sdt_framework.edge.life_objective import point_lives
+
+    lives = point_lives([registry.sensor("adxl345"), registry.sensor("wilcoxon-786b10")], paper8)
+    assert lives[0] == pytest.approx(
+        node_budget(registry.sensor("adxl345"), paper8, cell("2xAA")).life_years
+    )
+    assert np.isnan(lives[1])
