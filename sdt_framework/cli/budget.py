@@ -68,7 +68,7 @@ def budget(
         None, "--turn-on-ms", help="Sensor turn-on time, ms (your own)."
     ),
     mcu_current_ma: float | None = typer.Option(
-        None, "--mcu-current-ma", help="Microcontroller run current while computing, mA."
+        None, "--mcu-current-ma", help="Microcontroller run current while computing, mA (7.28)."
     ),
     mcu_ms: float | None = typer.Option(
         None, "--mcu-ms", help="Feature computation per report, ms (default: FFT scaled)."

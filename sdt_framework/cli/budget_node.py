@@ -99,10 +99,11 @@ def print_node_budget(reg, feature_set, sensor_name: str, *, axes, seconds, regi
         region=region,
         data_rate=opts.data_rate,
         radio=radio,
-        mcu_current_a=None if opts.mcu_current_ma is None else opts.mcu_current_ma / 1e3,
         mcu_time_s=None if opts.mcu_ms is None else opts.mcu_ms / 1e3,
         rx2_sf=opts.rx2_sf,
     )
+    if opts.mcu_current_ma is not None:
+        settings = replace(settings, mcu_current_a=opts.mcu_current_ma / 1e3)
     if opts.rx_current_ma is not None:
         settings = replace(settings, rx_current_a=opts.rx_current_ma / 1e3)
     if opts.sleep_ua is not None:

@@ -52,7 +52,7 @@ class NodeSettings:
     rx_symbols: int = nd.RX_SYMBOLS
     rx2_sf: int | None = None
     sleep_current_a: float = nd.SLEEP_CURRENT_A
-    mcu_current_a: float | None = None
+    mcu_current_a: float | None = nd.MCU_CURRENT_A
     mcu_time_s: float | None = None
 
     def __post_init__(self) -> None:
@@ -108,8 +108,10 @@ class NodeBudget:
 
 
 def _fft_time_s(samples: int) -> float:
+    """The reference FFT's cycles (at 120 MHz) scaled by N log2 N, run at the node's clock."""
     points, seconds, _ = nd.FFT_REFERENCE
-    return seconds * samples * math.log2(max(samples, 2)) / (points * math.log2(points))
+    cycles = seconds * 120e6 * samples * math.log2(max(samples, 2)) / (points * math.log2(points))
+    return cycles / nd.MCU_CLOCK_HZ
 
 
 def _pick_rate(rows: tuple[DataRateBudget, ...], wanted: str | None) -> DataRateBudget:
@@ -173,8 +175,10 @@ def node_budget(
     mcu_src = (
         "user setting"
         if s.mcu_time_s is not None
-        else f"{nd.FFT_REFERENCE[2]}, scaled to {samples} points x {s.axes} axes"
+        else f"{nd.FFT_REFERENCE[2]}, scaled to {samples} points x {s.axes} axes at 80 MHz"
     )
+    if s.mcu_current_a == nd.MCU_CURRENT_A:
+        mcu_src += f"; current: {nd.MCU_SOURCE}"
     t_acq = t_on + s.window_s
     t_rx1 = s.rx_symbols * symbol_time_s(rate.sf, 500e3 if s.region.upper() == "US915" else 125e3)
     rx2_sf, rx2_bw = nd.RX2_MODULATION[s.region.upper()]

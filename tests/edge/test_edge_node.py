@@ -81,7 +81,7 @@ def test_charge_per_report_and_life_match_the_hand_calculation(sensor, paper8):
 
 
 def test_unknown_figures_are_listed_not_filled_in(sensor, paper8):
-    settings = NodeSettings(data_rate="DR5")  # no microcontroller run current given
+    settings = NodeSettings(data_rate="DR5", mcu_current_a=None)  # run current not known
     result = node_budget(sensor, paper8, cell("D"), settings)
     mcu = next(s for s in result.stages if s.consumer == "microcontroller features")
     assert mcu.charge_c is None and mcu.current_a is None
@@ -168,3 +168,13 @@ def test_point_lives_nan_where_no_supply(registry, paper8):
         node_budget(registry.sensor("adxl345"), paper8, cell("2xAA")).life_years
     )
     assert np.isnan(lives[1])
+
+
+def test_default_microcontroller_stage_by_hand(registry, paper8):
+    # 3200 Hz x 0.64 s = 2048 samples per axis: the reference FFT itself, 2439 us at
+    # 120 MHz = 292 680 cycles per axis; at 91 uA/MHz the charge is 91 pC per cycle.
+    budget = node_budget(registry.sensor("adxl345"), paper8, cell("2xAA"))
+    mcu = next(s for s in budget.stages if s.consumer == "microcontroller features")
+    assert mcu.time_s == pytest.approx(3 * 292680 / 80e6)  # 10.98 ms at 80 MHz
+    assert mcu.current_a == pytest.approx(91e-6 * 80)  # 7.28 mA
+    assert mcu.charge_c == pytest.approx(3 * 292680 * 91e-12)  # 79.9 uC
