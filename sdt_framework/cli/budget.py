@@ -44,7 +44,7 @@ def budget(
         None,
         "--sensor",
         help="Budget the whole node with this sensor (a part's mode in brackets: "
-        "'adxl345-ds[odr=1600]'): charge per report by consumer, average current, battery life.",
+        "'adxl345-ds\\[odr=1600]'): charge per report by consumer, average current, battery life.",
     ),
     battery: str = typer.Option("2xAA", "--battery", help="Cell with --sensor: 2xAA, C, D."),
     capacity_mah: float | None = typer.Option(
