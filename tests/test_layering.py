@@ -62,7 +62,7 @@ ALLOWED: dict[str, set[str]] = {
     "verdict": {"bench", "errors", "seeding"},
     "explore": _BASE
     | _IO
-    | {"bench", "data", "registry", "sensor_files", "specs", "stages", "toml_files"},
+    | {"bench", "data", "edge", "registry", "sensor_files", "specs", "stages", "toml_files"},
     "report": _IO
     | {
         "bench",
