@@ -27,6 +27,7 @@ from scipy import signal
 
 from ..seeding import rng
 from . import synth_faults as f
+from . import synth_mix as mix
 from . import synth_model as m
 
 __all__ = ["FS_HZ", "generate_run"]
@@ -68,6 +69,18 @@ def _impulses(n: int, fs: float, times: np.ndarray, amplitudes: np.ndarray) -> n
     keep = (index >= 0) & (index < n)
     np.add.at(out, index[keep], amplitudes[keep])
     return out
+
+
+def _rotation(known: dict[float, np.ndarray], order: float, angle: np.ndarray) -> np.ndarray:
+    """exp(1j * order * angle); an integer order as a product of known lower ones (cheaper)."""
+    if order == 1 or not float(order).is_integer():
+        return np.exp(1j * order * angle)
+    if 1.0 not in known:
+        known[1.0] = np.exp(1j * angle)
+    lower = max(k for k in known if k < order and float(k).is_integer())
+    rest = order - lower
+    factor = known[rest] if rest in known else _rotation(known, rest, angle)
+    return known[lower] * factor
 
 
 def _harmonics(machine: m.Machine, condition: str, level: int, seed: int, scatter: dict):
@@ -121,7 +134,7 @@ def _sources(
     for part, terms in enumerate(_harmonics(machine, condition, level, seed, scatter)):
         for (group, order), amp in terms.items():
             if order not in rotation:
-                rotation[order] = np.exp(1j * order * (2 * np.pi * f1 * t + theta))
+                rotation[order] = _rotation(rotation, order, 2 * np.pi * f1 * t + theta)
             gain = drift[0] if part == 0 else 1.0
             lowfreq[part][group] = lowfreq[part].get(group, 0) + gain * amp * rotation[order]
     impacts = {"motor_bearing": np.zeros(n), "pump_bearing": np.zeros(n), "coupling": np.zeros(n)}
@@ -140,7 +153,7 @@ def _sources(
         if race == "inner":  # the defect passes through the load zone once per revolution
             amps *= 0.3 + 0.7 * (1 + np.cos(2 * np.pi * f1 * times + theta)) / 2
         impacts[where] = _impulses(n, fs, times, amps)
-    cavitation = np.zeros(n)
+    cavitation, hiss_wave = np.zeros(n), np.zeros(n)
     if condition in f.CAVITATION:
         amplitudes, rates = f.CAVITATION[condition]
         amp = amplitudes[level - 1] * scatter["cavitation"]
@@ -157,23 +170,33 @@ def _sources(
     if condition in f.DISCHARGE:
         hiss, surge = f.DISCHARGE[condition]
         carrier = signal.sosfilt(_band(f.DISCHARGE_BAND_HZ, fs), gen.standard_normal(n))
-        cavitation = hiss[level - 1] * scatter["cavitation"] * carrier / np.std(carrier)
+        hiss_wave = hiss[level - 1] * scatter["cavitation"] * carrier / np.std(carrier)
         lo, hi = f.RECIRCULATION_ORDERS
         sos = signal.butter(2, (lo * f1, hi * f1), btype="bandpass", fs=fs, output="sos")
         wave = signal.sosfilt(sos, gen.standard_normal(n))
         wave = signal.hilbert(wave / np.std(wave)) * surge[level - 1] * scatter["pump_radial"]
         lowfreq[1]["pump_radial"] = lowfreq[1].get("pump_radial", 0) + wave
+    tone = mix.TONE_ORDER * (2 * np.pi * f1 * t + theta)
     trend = np.exp(f.FLOW_TREND.get(condition, 0.0) * level)  # hydraulic power lost
     flow = drift[1] * trend * gen.standard_normal(n)
-    return {"lowfreq": lowfreq, "impacts": impacts, "flow": flow, "cavitation": cavitation}
+    return {
+        "lowfreq": lowfreq,
+        "impacts": impacts,
+        "flow": flow,
+        "cavitation": cavitation,
+        "hiss": hiss_wave,
+        "tone": (np.sin(tone), np.cos(tone)),
+    }
 
 
 def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float, install: tuple):
-    """One sensor's view of the sources: complex gains, resonances, direct cavitation, noise.
+    """One sensor's view of the sources, as the parts ``synth_mix.mix_column`` weighs.
 
-    ``install`` = (low, broadband): this run's factors on the channel's response
-    to the healthy machine's shaft-synchronous vibration, and to flow noise, per
-    resonance (operating point x mounting).
+    ``low``: the shaft-synchronous lines through the complex gains; ``fault``: impacts
+    ringing the casing resonances and the cavitation bursts; ``broadband``: flow noise
+    through the resonances, the valve's hiss and the sensor's own noise. ``install`` =
+    (low, broadband): this run's factors on the channel's response to the healthy
+    machine's shaft-synchronous vibration, and to flow noise, per resonance.
     """
     out = np.zeros(noise.size, dtype=complex)
     base, fault = src["lowfreq"]
@@ -181,13 +204,16 @@ def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float, insta
         out += path.gains[group] * install[0] * wave
     for group, wave in fault.items():
         out += path.gains[group] * wave
-    result = out.real + path.cavitation * src["cavitation"] + noise
+    impacts = path.cavitation * src["cavitation"]
     excitation = sum(path.impacts[k] * v for k, v in src["impacts"].items())
+    broadband = noise + path.cavitation * src["hiss"]
     flow = src["flow"] * m.FLOW_NOISE_G
     for (freq, zeta, weight), mount in zip(path.modes, install[1], strict=True):
         b, a, gain = _resonator(freq, zeta, fs)
-        result += weight * signal.lfilter(b, a, excitation + mount * flow / gain)
-    return result
+        broadband = broadband + weight * signal.lfilter(b, a, mount * flow / gain)
+        if np.any(excitation):
+            impacts = impacts + weight * signal.lfilter(b, a, excitation)
+    return {"low": out.real, "fault": impacts, "broadband": broadband}
 
 
 def generate_run(
@@ -200,6 +226,7 @@ def generate_run(
     duration_s: float,
     seed: int,
     fs: float = FS_HZ,
+    glitches: bool = True,
 ) -> dict[str, np.ndarray]:
     """Generate one run: channel -> float64 (acquisitions, round(duration_s * fs)) in g.
 
@@ -213,6 +240,8 @@ def generate_run(
         Number and length (s) of continuous acquisitions.
     seed
         Base seed; every draw derives from (seed, machine, run, ...).
+    glitches
+        Add the real archive's common-mode glitches (``synth_mix.add_glitch``).
     """
     spec = m.MACHINES[machine]
     run = f"{condition} {level}"
@@ -240,9 +269,28 @@ def generate_run(
             float(np.exp(low)),
             tuple(point * np.exp(highs + _clipped_normal(own, own_sd[1], 2.5))),
         )
+    drift = mix.column_drift(
+        rng(seed, machine, run, "acquisition drift"),
+        {ch: rng(seed, machine, run, "column drift", ch) for ch in channels},
+        acquisitions,
+    )
     for acq in range(acquisitions):
         src = _sources(spec, condition, severity, run, acq, n, seed, fs, point)
         for ch in channels:
             noise = rng(seed, machine, run, "noise", acq, ch).normal(0, m.SENSOR_NOISE_G, n)
-            out[ch][acq] = _channel(src, m.channel_path(ch), noise, fs, install[ch])
+            path = m.channel_path(ch)
+            rms, kurt, crest = mix.target(machine, run, ch)
+            mode = _resonator(*path.modes[0][:2], fs)[:2]
+            out[ch][acq] = mix.mix_column(
+                _channel(src, path, noise, fs, install[ch]),
+                (rms * drift[ch][acq], kurt, crest),
+                mode,
+                (*src["tone"], rng(seed, machine, run, "tone", ch).uniform(0, 2 * np.pi)),
+                rng(seed, machine, run, "knocks", acq, ch),
+                mix.measured(machine, run),
+            )
+        if glitches:
+            mix.add_glitch(rng(seed, machine, run, "glitch", acq), out, acq)
+    for x in out.values():
+        np.clip(x, -m.FULL_SCALE_G, m.FULL_SCALE_G, out=x)
     return out

@@ -28,8 +28,11 @@ from .synth import FS_HZ, generate_run
 __all__ = ["DEFAULTS", "GENERATOR", "SyntheticPump", "open_synthetic"]
 
 DEFAULTS = {"seed": 0, "acquisitions": 1, "duration": 12.0}
+#: ``layout = "real"``: the real archive's columns per run (12 s each, five per 60 s
+#: acquisition): healthy 60, a fault 15 (the data article: 10-20, 2-4 acquisitions)
+REAL_LAYOUT = {"healthy": m.REAL_COLUMNS["healthy"], "fault": 15}
 #: fingerprint of the generator: the model, the fault signatures and the code that draws
-MODULES = ("synth.py", "synth_model.py", "synth_faults.py")
+MODULES = ("synth.py", "synth_model.py", "synth_faults.py", "synth_mix.py", "synth_marks.toml")
 GENERATOR = hashlib.sha256(
     b"".join(Path(__file__).with_name(n).read_bytes() for n in MODULES)
 ).hexdigest()[:12]
@@ -61,8 +64,14 @@ class SyntheticPump(Dataset):
         machines: list[str],
         channels: list[str],
         conditions: list[str] | None,
+        layout: str = "compact",
+        glitches: bool = True,
     ) -> None:
         self.seed, self.acquisitions, self.duration = seed, acquisitions, duration
+        self.glitches = glitches
+        self._columns = {"healthy": acquisitions, "fault": acquisitions}
+        if layout == "real":
+            self._columns = dict(REAL_LAYOUT)
         self.channels = tuple(channels)
         self._last: tuple[tuple[str, str], dict[str, np.ndarray]] | None = None
         n = round(duration * FS_HZ)
@@ -72,8 +81,9 @@ class SyntheticPump(Dataset):
             for condition, levels in machine.conditions:
                 if conditions is not None and condition not in conditions:
                     continue
-                for level in range(1, levels + 1):
+                for level in m.levels_of(machine, condition, levels):
                     run = f"{condition} {level}"
+                    columns = self._columns["healthy" if condition == "healthy" else "fault"]
                     for ch in channels:
                         recordings.append(
                             Recording(
@@ -87,9 +97,9 @@ class SyntheticPump(Dataset):
                                 recording_id=f"{name}/{machine.speed}/{run}/{ch}",
                                 sampling_rate_hz=FS_HZ,
                                 units="g",
-                                n_acquisitions=acquisitions,
+                                n_acquisitions=columns,
                                 samples_per_acquisition=n,
-                                measurement=measurement_groups(acquisitions),
+                                measurement=measurement_groups(columns),
                                 source=f"synthetic (generator {GENERATOR})",
                                 reader=partial(self._generate, name, condition, level, ch),
                             )
@@ -107,9 +117,10 @@ class SyntheticPump(Dataset):
                     condition,
                     level,
                     channels=self.channels,
-                    acquisitions=self.acquisitions,
+                    acquisitions=self._columns["healthy" if condition == "healthy" else "fault"],
                     duration_s=self.duration,
                     seed=self.seed,
+                    glitches=self.glitches,
                 ),
             )
         return self._last[1][channel]
@@ -125,6 +136,8 @@ def open_synthetic(
     channels: str | Iterable[str] | None = None,
     conditions: str | Iterable[str] | None = None,
     triaxial: bool = False,
+    layout: str = "compact",
+    glitches: bool = True,
 ) -> SyntheticPump:
     """The synthetic pump dataset (``path`` is ignored: nothing is read from disk).
 
@@ -142,9 +155,21 @@ def open_synthetic(
         Add ch6, so that ch6, ch2 and ch3 form a triaxial node on the motor drive-end
         bearing housing (x, y, z: ``synth_model.NODE_AXES``); off by default, the
         paper's five channels. The other channels' signals do not change with it.
+    layout
+        ``"compact"`` (default): ``acquisitions`` columns per run; ``"real"``: the real
+        archive's proportions, healthy runs 60 columns (12 acquisitions of 60 s), fault runs
+        15 (3), each column ``duration`` long (columns 5k..5k+4 form one acquisition).
+    glitches
+        Common-mode glitches at the real archive's rate (21 of 575 records; on by default,
+        as the real records carry them): spikes on several channels of one column at once,
+        up to the recorder's +-50 g.
     """
     if not isinstance(triaxial, bool):
         raise SDTError(f"synthetic-pump: triaxial must be true or false, got {triaxial!r}")
+    if not isinstance(glitches, bool):
+        raise SDTError(f"synthetic-pump: glitches must be true or false, got {glitches!r}")
+    if layout not in ("compact", "real"):
+        raise SDTError(f"synthetic-pump: layout must be 'compact' or 'real', got {layout!r}")
     if int(acquisitions) < 1:
         raise SDTError(f"synthetic-pump: acquisitions must be >= 1, got {acquisitions}")
     if not 0.2 < float(duration) < math.inf:
@@ -163,4 +188,6 @@ def open_synthetic(
             channels, [*m.CHANNELS, *m.NODE_CHANNELS] if triaxial else m.CHANNELS, "channel"
         ),
         conditions=chosen_conditions,
+        layout=layout,
+        glitches=glitches,
     )

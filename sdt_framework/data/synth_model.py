@@ -48,6 +48,9 @@ __all__ = [
 #: acquisition is 60 s stored as five columns; healthy runs 12 acquisitions, faults 2-4
 COLUMNS_PER_ACQUISITION = 5
 REAL_COLUMNS = {"healthy": 60, "fault": 10}
+#: the real reference chain: NI USB-4432, 24 bit, full scale +-50 g, band-pass 1 Hz-10 kHz
+#: (the data article); the stored signals are clipped there
+FULL_SCALE_G = 50.0
 
 VANES = 6  # no source for either pump's vane count: kept
 
@@ -110,6 +113,8 @@ MACHINES: dict[str, Machine] = {
             ("cavitation suction", 4),
             ("cavitation discharge", 5),
         ),
+        # the real archive holds no "cavitation suction 2" for Motor-4 (its README)
+        frozenset({("cavitation suction", 2)}),
     ),
     "Motor-2": Machine(
         "Motor-2",

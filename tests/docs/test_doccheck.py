@@ -68,3 +68,23 @@ def test_blocks_notes_and_shown_files_are_read(tmp_path):
         ("sdt b", (), 10),
     ]
     assert found[1].notes == {"skip": "", "reason": "needs hardware"}
+
+
+def test_a_slow_block_keeps_the_slow_time_limit_when_every_block_runs(tmp_path, monkeypatch):
+    """``--mode all`` gives a ``slow`` block the slow limit: it stopped full benchmarks at 300 s."""
+    from tools.doccheck import runner
+
+    limits: dict[str, float] = {}
+    monkeypatch.setattr(runner, "judge", lambda c, s, t: limits.setdefault(c.text, t))
+    doc = tmp_path / "d.md"
+    doc.write_text(
+        "```\n$ echo quick\nquick\n```\n\n<!-- doccheck: slow -->\n```\n$ echo long\nlong\n```\n"
+    )
+    found = steps(doc, tmp_path)
+    for mode in ("all", "slow"):
+        limits.clear()
+        list(runner.run_doc(found, mode, tmp_path))
+        assert limits == {
+            "echo quick": runner.FAST_TIMEOUT_S if mode == "all" else runner.SLOW_TIMEOUT_S,
+            "echo long": runner.SLOW_TIMEOUT_S,
+        }

@@ -33,8 +33,8 @@ def test_hours_of_work_need_yes(tmp_path, monkeypatch, sdt_main):
     code, _, err = sdt_main("benchmark", "--quick", "--repeats", "5000", "--out", str(out))
     assert code == 2
     line = err.strip()
-    # 180 runs per 2 repeats; 260 recordings x (2 noisy sensors x 5000 repeats + reference)
-    assert line.startswith("error: this benchmark is 450000 runs and 2600260 featurised signals")
+    # 180 runs per 2 repeats; 255 recordings x (2 noisy sensors x 5000 repeats + reference)
+    assert line.startswith("error: this benchmark is 450000 runs and 2550255 featurised signals")
     assert re.search(r", estimated [\d.]+ (h|days) on \d+ process", line)
     assert line.endswith(
         "add --yes to start it, or lower --repeats or select fewer sensors, classifiers or machines"

@@ -33,11 +33,11 @@ def test_units_multiply_the_runs_draws_and_memory(registry):
     # every run is repeated per unit: 2 machines x 3 scenarios x 3 sensors x 5 classifiers
     # x 2 repeats x 7 units
     assert drawn.runs == 180 * 7 == 7 * nominal.runs
-    # 260 recordings: adxl345 and adxl357 (noisy, with tolerances) 2 repeats x 7 units each;
+    # 255 recordings: adxl345 and adxl357 (noisy, with tolerances) 2 repeats x 7 units each;
     # the reference (noise-free, no tolerances) once, shared by every unit and repeat
-    assert drawn.feature_draws == 260 * (2 * 2 * 7 + 1)
+    assert drawn.feature_draws == 255 * (2 * 2 * 7 + 1)
     # each (recording, sensor, unit, repeat) is a feature block held until the end
-    assert drawn.memory_bytes - nominal.memory_bytes >= 260 * 3 * 2 * 6 * BLOCK_BYTES
+    assert drawn.memory_bytes - nominal.memory_bytes >= 255 * 3 * 2 * 6 * BLOCK_BYTES
     assert drawn.seconds > 6 * nominal.seconds
 
 
@@ -59,7 +59,7 @@ def test_a_million_units_is_refused_before_the_folder_is_claimed(tmp_path):
     assert "\n" not in line and "Traceback" not in line
     # even --yes does not start what cannot fit; the line names --units and the size
     assert line.startswith(
-        "error: this benchmark with --units 1000000 is 180000000 runs and 1040000260 "
+        "error: this benchmark with --units 1000000 is 180000000 runs and 1020000255 "
         "featurised signals, estimated "
     )
     assert " TB of memory, more than the " in line and " available; lower --units" in line

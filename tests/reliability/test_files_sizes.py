@@ -50,7 +50,7 @@ def test_synth_that_cannot_fit_is_refused(
     args = ["dataset", "synth", "--out", str(out), "--duration", "1e6", *yes]
     code, _, err = sdt_main(*args)
     assert code == 2 and err.count("\n") == 1
-    assert "5,200,000,000,000 samples" in err and "more than the" in err  # 260 x 1e6 s x 20 kHz
+    assert "5,100,000,000,000 samples" in err and "more than the" in err  # 255 x 1e6 s x 20 kHz
     assert not out.exists()
 
 
@@ -58,10 +58,10 @@ def test_long_synth_needs_yes(sdt_main, monkeypatch, capsys, tmp_path: Path) -> 
     monkeypatch.setattr("sdt_framework.cli.guards.LONG_SECONDS", 0.0)
     args = ["dataset", "synth", "--out", str(tmp_path / "syn"), "--duration", "0.25"]
     code, _, err = sdt_main(*args)
-    assert code == 2 and "1,300,000 samples" in err and "pass --yes" in err
+    assert code == 2 and "1,275,000 samples" in err and "pass --yes" in err
     assert not (tmp_path / "syn").exists()
     code, _, err = sdt_main(*args, "--yes")
-    assert code == 0 and "wrote 260 files" in err
+    assert code == 0 and "wrote 255 files" in err
 
 
 def test_synth_disk_estimate_matches_what_is_written(tmp_path: Path) -> None:

@@ -79,7 +79,6 @@ def run_doc(steps: list[Command | FileStep], mode: str, cache: Path, root: Path 
     """Yield a Result per command of one document (``mode`` fast, slow or all), in order."""
     if mode == "slow" and not has_slow(steps):
         return
-    timeout = SLOW_TIMEOUT_S if mode == "slow" else FAST_TIMEOUT_S
     with tempfile.TemporaryDirectory(prefix="doccheck-") as folder:
         sandbox = Sandbox(Path(folder), root, cache)
         for step in steps:
@@ -92,4 +91,5 @@ def run_doc(steps: list[Command | FileStep], mode: str, cache: Path, root: Path 
             elif mode == "fast" and "slow" in step.notes:
                 continue
             else:
-                yield judge(step, sandbox, timeout)
+                slow = mode == "slow" or "slow" in step.notes
+                yield judge(step, sandbox, SLOW_TIMEOUT_S if slow else FAST_TIMEOUT_S)
