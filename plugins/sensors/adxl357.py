@@ -3,6 +3,31 @@
 from __future__ import annotations
 
 from sdt_framework import SensorSpec, hookimpl
+from sdt_framework.specs.supply import Supply, SupplyFigure
+
+_DS = "Analog Devices ADXL356/ADXL357 Data Sheet, Rev. A"
+_LOW_POWER = "page 1, Features: Low power, VSUPPLY (LDO regulator enabled)"
+#: Supply of the ADXL357 (one figure for every ODR: the Features list gives no current per rate).
+SUPPLY = Supply(
+    measure_ua=SupplyFigure(
+        value=200,
+        doc=_DS,
+        where=_LOW_POWER,
+        printed="ADXL357 in measurement mode: 200 μA",
+        basis="typical",
+    ),
+    standby_ua=SupplyFigure(
+        value=21,
+        doc=_DS,
+        where=_LOW_POWER,
+        printed="ADXL356/ADXL357 in standby mode: 21 μA",
+        basis="typical",
+    ),
+    turn_on_ms=SupplyFigure(
+        absent="only the Features page of the datasheet was read; it gives no turn-on time"
+    ),
+    mode="odr=4000",
+)
 
 ADXL357 = SensorSpec(
     name="adxl357",
@@ -18,6 +43,7 @@ ADXL357 = SensorSpec(
     analog_order=1,
     digital_cutoff_hz=1000,
     digital_order=8,
+    supply=SUPPLY,
     # Unit-to-unit spread, used only by `sdt benchmark --units N` (not hashed, nominal unchanged):
     # sensitivity 47104/51200/55296 LSB/g min/typ/max at +-10 g (+-8 %), the datasheet table as
     # quoted and confirmed by ADI on EngineerZone (ez.analog.com, q-a 104360); secondary source.

@@ -10,6 +10,18 @@ Nyquist frequency (skipped), the recording already carries this chain's noise
 from __future__ import annotations
 
 from sdt_framework import SensorSpec, hookimpl
+from sdt_framework.specs.supply import Supply, SupplyFigure
+
+_NOT_READ = (
+    "the Wilcoxon 786B-10 datasheet was not found in the stored copies searched; an IEPE "
+    "sensor's constant-current excitation depends on the conditioner, so no figure is assumed"
+)
+#: No supply figures: the reference chain is a wired IEPE sensor, not a battery node part.
+SUPPLY = Supply(
+    measure_ua=SupplyFigure(absent=_NOT_READ),
+    standby_ua=SupplyFigure(absent=_NOT_READ),
+    turn_on_ms=SupplyFigure(absent=_NOT_READ),
+)
 
 WILCOXON_786B10 = SensorSpec(
     name="wilcoxon-786b10",
@@ -25,6 +37,7 @@ WILCOXON_786B10 = SensorSpec(
     mech_order=2,
     analog_cutoff_hz=10000,
     analog_order=1,
+    supply=SUPPLY,
 )
 
 

@@ -40,9 +40,55 @@ def budget(
         "--repeater/--no-repeater",
         help="Payload limits of the repeater-compatible table (default) or the larger one.",
     ),
+    sensor: str | None = typer.Option(
+        None,
+        "--sensor",
+        help="Budget the whole node with this sensor (a part's mode in brackets: "
+        "'adxl345-ds\\[odr=1600]'): charge per report by consumer, average current, battery life.",
+    ),
+    battery: str = typer.Option("2xAA", "--battery", help="Cell with --sensor: 2xAA, C, D."),
+    capacity_mah: float | None = typer.Option(
+        None, "--capacity-mah", help="Your own cell's capacity, mAh (replaces --battery)."
+    ),
+    cell_voltage: float = typer.Option(3.6, "--cell-voltage", help="Your own cell's voltage, V."),
+    self_discharge_pct: float | None = typer.Option(
+        None, "--self-discharge-pct", help="Your own cell's self-discharge, % per year."
+    ),
+    window: str = typer.Option("0.64s", "--window", help="Acquisition per report (0.64s)."),
+    data_rate: str | None = typer.Option(
+        None, "--dr", help="Data rate for --sensor (default: the slowest that fits one uplink)."
+    ),
+    sensor_current_ua: float | None = typer.Option(
+        None, "--sensor-current-ua", help="Sensor supply current measuring, uA (your own)."
+    ),
+    standby_ua: float | None = typer.Option(
+        None, "--standby-ua", help="Sensor standby current, uA (your own)."
+    ),
+    turn_on_ms: float | None = typer.Option(
+        None, "--turn-on-ms", help="Sensor turn-on time, ms (your own)."
+    ),
+    mcu_current_ma: float | None = typer.Option(
+        None, "--mcu-current-ma", help="Microcontroller run current while computing, mA (7.28)."
+    ),
+    mcu_ms: float | None = typer.Option(
+        None, "--mcu-ms", help="Feature computation per report, ms (default: FFT scaled)."
+    ),
+    rx_current_ma: float | None = typer.Option(
+        None, "--rx-current-ma", help="Radio receive current, mA (default 12.68)."
+    ),
+    sleep_ua: float | None = typer.Option(
+        None, "--sleep-ua", help="Node sleep current, uA (default 1.608)."
+    ),
+    rx2_sf: int | None = typer.Option(
+        None, "--rx2-sf", help="RX2 spreading factor your network uses (default: the region's)."
+    ),
     as_json: bool = typer.Option(False, "--json", help="Print JSON for scripts."),
 ) -> None:
     """Payload, LoRaWAN airtime, duty cycle and radio energy of one report per interval.
+
+    With --sensor: the whole node, one stage per consumer (accelerometer
+    measuring and in standby, microcontroller, radio transmit, RX1, RX2,
+    sleep), each with its source; average current and battery life in years.
 
     One report is one window's feature vector on every axis. For each data rate
     of the region: whether it fits one uplink (else how many), time on air
@@ -54,6 +100,8 @@ def budget(
       sdt budget --features paper8 --axes 3 --interval 10min --region EU868
 
       sdt budget --dtype float16 --region US915 --json
+
+      sdt budget --sensor adxl345 --battery 2xAA --interval 10min
     """
     from ..edge import edge_budget, parse_interval
     from ..edge import radio as radio_named
@@ -75,6 +123,19 @@ def budget(
             source="user override",
         )
     spec = resolve_feature_set(registry(ctx), features)
+    if sensor is not None:
+        from .budget_node import NodeOptions, print_node_budget
+
+        opts = NodeOptions(
+            battery, capacity_mah, cell_voltage, self_discharge_pct, window, data_rate,
+            sensor_current_ua, standby_ua, turn_on_ms, mcu_current_ma, mcu_ms, rx_current_ma,
+            sleep_ua, rx2_sf,
+        )  # fmt: skip
+        print_node_budget(
+            registry(ctx), spec if dtype is None else spec.with_dtype(dtype), sensor,
+            axes=axes, seconds=seconds, region=region, radio=model, opts=opts, as_json=as_json,
+        )  # fmt: skip
+        return
     result = edge_budget(
         spec,
         axes=axes,

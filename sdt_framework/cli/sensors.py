@@ -195,6 +195,7 @@ def show_sensor(
     rows = [
         [field, views.profile_cell(spec, field, data), info.description or ""]
         for field, info in SensorSpec.model_fields.items()
+        if field != "supply"  # shown by `sdt budget --sensor`, with its sources
     ]
     step = spec.quantisation_step_g
     rows.append(["quantisation_step_g", _fmt(step and float(f"{step:.6g}")), "2 G_max / 2**B, g"])

@@ -8,7 +8,8 @@ main_effects.csv       mean Macro-F1 per parameter level and cell, with 95 % CIs
 sensitivity.csv        ANOVA shares (grid) or SALib indices (morris/sobol/lhs), ranked
 min_spec.csv           least demanding level of each parameter meeting the target
 min_spec_points.csv    every evaluated point meeting the target
-pareto.csv             cost and mean Macro-F1 of every point, and whether it is on the front
+pareto.csv             cost, mean Macro-F1 and battery life (2xAA) of every point, whether it
+                       is on the cost/Macro-F1 front and on the front with battery life
 (each analysis table has a ``fidelity`` column: "full" or "screen")
 sweep.toml             the sweep as run (re-run or resume with ``sdt explore sweep.toml``)
 
@@ -26,8 +27,10 @@ import tomli_w
 from ..bench.config_paths import relative_to
 from ..bench.folder import EXPLORE_FILES
 from ..bench.results import write_frame
+from ..edge.life_objective import non_dominated, point_lives  # battery-life objective (issue 34)
+from ..edge.node import NodeSettings
 from ..io import atomic_write_text
-from .effects import main_effects, point_means, with_best
+from .effects import CELL, main_effects, point_means, with_best
 from .minspec import meeting_points, min_spec
 from .pareto import demands, point_costs, with_front
 from .run import ExplorePlan
@@ -44,6 +47,22 @@ def _base_cost(explore: ExplorePlan) -> float:
         return explore.sweep.base_cost
     price = getattr(explore.base, "price", None)
     return float(getattr(price, "value", price) or 0.0)
+
+
+def _lives(explore: ExplorePlan) -> list[float]:
+    """Battery life (years, 2xAA, one report per 10 min) of each point (edge.life_objective)."""
+    settings = NodeSettings(window_s=explore.plan.config.window_s)
+    specs = [p.spec for p in explore.points]
+    return list(point_lives(specs, explore.plan.feature_set, "2xAA", settings))
+
+
+def _front_with_life(pareto: pd.DataFrame) -> pd.Series:
+    """Per cell, the points no other beats on cost, Macro F1 and battery life together."""
+    out = pd.Series(False, index=pareto.index)
+    for _, part in pareto.groupby(CELL, sort=False):
+        objectives = part[["cost", "macro_f1", "battery_life_years"]].to_numpy(float)
+        out[part.index] = non_dominated(objectives * [1.0, -1.0, -1.0])
+    return out
 
 
 def write_explore(
@@ -74,8 +93,10 @@ def write_explore(
         [{"point": p.spec.name, "design_index": p.index, **p.values} for p in explore.points]
     )
     points["cost"] = point_costs(points, base_values, sweep, _base_cost(explore), demand)
+    points["battery_life_years"] = _lives(explore)  # issue 34 hook: NaN without supply figures
     means = point_means(analysed[analysed["role"] == "point"], fields)
-    pareto = with_front(means.merge(points[["point", "cost"]], on="point"))
+    pareto = with_front(means.merge(points[["point", "cost", "battery_life_years"]], on="point"))
+    pareto["on_front_with_life"] = _front_with_life(pareto)  # issue 34 hook
     tables = {
         "points": points,
         "skipped_points": explore.skipped,

@@ -27,6 +27,7 @@ from pydantic import Field, field_validator, model_validator
 
 from ..specs import Spec
 from .error_terms import ErrorTerm, check_terms
+from .supply import PartSupply
 from .values import AxisValues, Basis, Document, Entry, Model, Price
 
 __all__ = [
@@ -144,6 +145,11 @@ class PartSpec(Spec):
         description="Datasheet error terms (offset_tempco, sensitivity_tempco, nonlinearity, "
         "cross_axis); off unless a mode enables them (sdt_framework.parts.error_terms).",
     )
+    supply: PartSupply | None = Field(
+        default=None,
+        description="Supply current per mode, standby current, turn-on time "
+        "(sdt_framework.parts.supply); not hashed: the chain does not depend on it.",
+    )
 
     @model_validator(mode="after")
     def _check_structure(self) -> PartSpec:
@@ -167,6 +173,8 @@ class PartSpec(Spec):
         for field, entry in self.values.items():
             self._check_entry(field, entry, f"values.{field}", None)
         check_terms(self.errors, self.documents, self.modes)
+        if self.supply is not None:
+            self.supply.check(self.documents, self.modes)
         for field in CHAIN_VALUES:
             keys = setters.get(field, [])
             if len(keys) > 1:
@@ -216,6 +224,7 @@ class PartSpec(Spec):
         data = super().content_dict()
         if not data.get("errors"):
             data.pop("errors", None)
+        data.pop("supply", None)  # the node's energy, not the chain
         return data
 
     def default_mode(self) -> dict[str, str]:

@@ -33,6 +33,7 @@ from .error_modes import (
 )
 from .model import CHAIN_VALUES, OPTIONAL_VALUES, AxisValues, Entry, PartSpec
 from .names import canonical_name
+from .supply import resolve_supply
 
 __all__ = ["FieldSource", "ModeError", "Resolved", "all_modes", "resolve", "select_mode"]
 
@@ -201,6 +202,9 @@ def resolve(part: PartSpec, given: Mapping[str, str] | None = None) -> Resolved:
     stages, tolerances = error_stages(terms, choice)
     named = {**mode, **shown_keys(choice)}
     sensor = _sensor(part, named, numbers, cited, stages, tolerances)
+    if part.supply is not None:
+        supply = resolve_supply(part.supply, part.documents, mode)
+        sensor = sensor.model_copy(update={"supply": supply})
     return Resolved(part, mode, sensor, tuple(sources), choice, terms)
 
 

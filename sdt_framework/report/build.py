@@ -10,12 +10,14 @@ from typing import Any
 
 from ..errors import SDTError
 from ..io import atomic_write_text
+from .decision import decision_blocks
 from .deployment import deployment_blocks
 from .document import Block, Code, Heading, Items, Paragraph, Table
 from .edge import edge_blocks
 from .exploration import exploration_blocks
 from .figures import draw_figures
 from .load import ResultsFolder, load_results
+from .node_edge import node_blocks
 from .render import render_html, render_markdown
 from .severity import severity_blocks
 from .style import sensor_colors
@@ -144,6 +146,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     """The whole report as blocks; draws the figures into ``figures_dir``."""
     colors = sensor_colors(folder.sensors, folder.reference)
     blocks = _overview(folder)
+    blocks += decision_blocks(folder, registry)
     blocks += verdict_blocks(folder, colors, figures_dir)
     blocks += [
         Heading("Table 4: Macro F1 (mean ± SD)", 2),
@@ -165,6 +168,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     blocks += deployment_blocks(folder, registry)
     blocks += exploration_blocks(folder.path)
     blocks += edge_blocks(folder, registry)
+    blocks += node_blocks(folder, registry)
     blocks.append(Heading("Figures", 2))
     blocks += draw_figures(folder, registry, colors, figures_dir, CAPTIONS)
     return blocks + _provenance(folder)

@@ -9,6 +9,7 @@ from pydantic import Field, field_validator, model_validator
 
 from .base import _NAME, Spec
 from .stage_use import StageUse, Tolerance
+from .supply import Supply
 
 __all__ = ["SensorSpec"]
 
@@ -89,6 +90,11 @@ class SensorSpec(Spec):
         "stage is added to a drawn unit if the profile does not list it). Not hashed: the "
         "nominal chain does not depend on it.",
     )
+    supply: Supply | None = Field(
+        default=None,
+        description="Supply current measuring and in standby, turn-on time, each sourced "
+        "(sdt_framework.specs.supply). Not hashed: the chain does not depend on it.",
+    )
 
     @field_validator("name")
     @classmethod
@@ -155,6 +161,7 @@ class SensorSpec(Spec):
         """Behaviour-defining fields (provenance and unset optional fields excluded)."""
         data = super().content_dict()
         data.pop("tolerances", None)  # only drawn units use them, and a unit drops them
+        data.pop("supply", None)  # the node's energy, not the chain
         for entry in data.get("stages", ()):
             entry.pop("tolerances", None)
         for key in self._hash_if_set:

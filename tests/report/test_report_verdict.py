@@ -44,11 +44,11 @@ def test_per_recording_counts_reproduce_every_run(results_master):
         assert f1_score(y_true, y_pred, average="macro", zero_division=0) == run["macro_f1"]
 
 
-def test_the_report_opens_with_the_verdict(full_report):
+def test_the_report_opens_with_the_decision_table_then_the_verdict(full_report):
     _, written = full_report
     text = written["md"].read_text(encoding="utf-8")
     headings = [line for line in text.splitlines() if line.startswith("## ")]
-    assert headings[0] == "## Verdict"
+    assert headings[:2] == ["## Decision table", "## Verdict"]  # issue 34: decision first
     verdict = text.split("## Verdict")[1].split("\n## ")[0]
     assert "adxl345 vs wilcoxon-786b10" in verdict and "Best sensor" in verdict
     assert "Friedman/Nemenyi not computed" in verdict  # two sensors: no ranking
