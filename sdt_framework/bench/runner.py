@@ -193,7 +193,11 @@ def _run(
         )
         for r in plan.recordings
     ]
-    jobs = recordings_longest_first(jobs)  # results are re-ordered by plan below
+    # Longest first only where processes share the work: one process ends at the same time
+    # in any order, and plan order keeps its cheap runs first (what Ctrl-C leaves finished).
+    spread = config.backend == "dask" or config.n_jobs() > 1
+    if spread:
+        jobs = recordings_longest_first(jobs)  # results are re-ordered by plan below
     seconds: dict[str, float] = {}
     task_seconds = {"features": 0.0, "classify": 0.0}
     sources = [r.source for r in plan.recordings]
@@ -220,7 +224,8 @@ def _run(
         factors = {**read_factors(cache_dir), **learn_factors(previous.values())}
         report("runs", len(finished), len(planned))
         computed: list[RunResult] = []
-        for result in executor.map_unordered(run_classifier, longest_first(todo, factors)):
+        order = longest_first(todo, factors) if spread else todo
+        for result in executor.map_unordered(run_classifier, order):
             if result.status == "ok":
                 store_finished(runs_dir, result)
             finished[result.key] = result

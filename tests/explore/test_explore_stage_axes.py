@@ -327,7 +327,8 @@ def test_explore_end_to_end_names_the_stage_parameter_in_min_spec(tmp_path):
     spec = pd.read_csv(out / "min_spec.csv")
     assert set(spec["parameter"]) == {"nonlinearity.second_pct_fs"}
     assert (spec["base_level"] == 0).all()
-    points = pd.read_csv(out / "points.csv")
+    # the default (adaptive) strategy screens every point: their table is the screen's
+    points = pd.read_csv(out / "screen" / "points.csv")
     assert points["nonlinearity.second_pct_fs"].tolist() == [0, 5]
     assert "nonlinearity.second_pct_fs (base 0)" in result.stdout
     again, _ = load_sweep(out / "sweep.toml")  # the sweep as run reads back the same
