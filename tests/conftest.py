@@ -32,6 +32,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
+from joblib.externals.loky import get_reusable_executor
 from sdt_plugins.sensors import adxl345 as builtin_adxl345
 from sdt_plugins.sensors import adxl357 as builtin_adxl357
 from sdt_plugins.sensors import wilcoxon_786b10 as builtin_reference
@@ -88,6 +89,9 @@ def fake_dist(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[FakeD
         lines = "\n".join(f"{name} = {target}" for name, target in entry_points.items())
         (info / "entry_points.txt").write_text(f"[sdt_framework]\n{lines}\n")
         importlib.invalidate_caches()
+        # joblib keeps one loky pool per process; workers an earlier test started do not
+        # see this new site (as a running sdt would not), so the next pool starts afresh
+        get_reusable_executor().shutdown(wait=True)
         return root
 
     yield make
