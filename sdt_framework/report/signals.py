@@ -94,8 +94,10 @@ def degrade_all(
     traces = []
     for spec in sensors:
         y, fs_out = degrade(x, fs, spec, seed, label=recording.recording_id)
-        lsb = 2 * spec.full_scale_g / 2**spec.adc_bits
-        traces.append(SensorTrace(spec.name, y, fs_out, spec.full_scale_g, lsb))
+        # a chain without a range or converter (native-reference) neither clips nor quantises
+        full_scale = spec.full_scale_g if spec.full_scale_g is not None else np.inf
+        lsb = 2 * full_scale / 2**spec.adc_bits if spec.adc_bits is not None else 0.0
+        traces.append(SensorTrace(spec.name, y, fs_out, full_scale, lsb))
     return x, traces
 
 
