@@ -54,7 +54,11 @@ class Spectrum:
 def chain_bandwidth(spec: object) -> float:
     """A sensor chain's usable bandwidth: the lowest of its analog/digital cut-offs and Nyquist."""
     cutoffs = [getattr(spec, name, None) for name in ("analog_cutoff_hz", "digital_cutoff_hz")]
-    return float(min([c for c in cutoffs if c] + [spec.sampling_rate_hz / 2]))
+    rate = spec.sampling_rate_hz
+    # a chain at the recording's own rate (native-reference): the recording's Nyquist limits
+    # it, and envelope_band caps the band at 0.45 x fs
+    nyquist = rate / 2 if isinstance(rate, (int, float)) else float("inf")
+    return float(min([c for c in cutoffs if c] + [nyquist]))
 
 
 def envelope_band(fs: float, bandwidth_hz: float, top_hz: float = 8000.0) -> tuple[float, float]:
