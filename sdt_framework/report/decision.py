@@ -16,11 +16,10 @@ import numpy as np
 from ..edge import report_bytes
 from ..errors import SDTError
 from ..features import resolve_feature_set
-from ..verdict import compare
 from .document import Block, Heading, Paragraph, Table
 from .load import ResultsFolder
 from .node_edge import BATTERY, life_cell, node_budgets
-from .verdict import missing_reference_note
+from .verdict import folder_comparison, missing_reference_note
 
 __all__ = ["decision_blocks"]
 
@@ -29,14 +28,7 @@ def _losses(folder: ResultsFolder, margin: float) -> dict[str, str]:
     if missing_reference_note(folder) is not None:
         return {}
     try:
-        comparison = compare(
-            folder.results,
-            folder.reference,
-            margin=margin,
-            per_recording=folder.per_recording,
-            allocation=folder.allocation,
-            order=folder.sensors,
-        )
+        comparison = folder_comparison(folder, margin)
     except Exception:  # the Verdict section reports why; the table says "-"
         return {}
     overall = comparison.table[comparison.table["level"] == "overall"]

@@ -48,6 +48,8 @@ class ResultsFolder:
     problems: list[str] = field(default_factory=list)
     #: why per_recording.parquet was set aside (unreadable, or not matching the results)
     per_recording_problem: str | None = None
+    #: the verdict's comparison per margin, computed once for every section that shows it
+    comparisons: dict[float, Any] = field(default_factory=dict, repr=False)
 
     @property
     def ok(self) -> pd.DataFrame:

@@ -18,7 +18,7 @@ from .document import Block, Figure, Heading, Items, Paragraph, Table
 from .load import ResultsFolder
 from .style import save_figure
 
-__all__ = ["CD_FIGURE", "missing_reference_note", "verdict_blocks"]
+__all__ = ["CD_FIGURE", "folder_comparison", "missing_reference_note", "verdict_blocks"]
 
 CD_FIGURE = "cd_diagram.png"
 
@@ -35,6 +35,24 @@ def _intro(comparison: Comparison) -> Paragraph:
         "**inconclusive**, with the reason. `sdt compare` prints the per-cell table and "
         "writes comparison.csv; the statistics are explained in docs/report.md."
     )
+
+
+def folder_comparison(folder: ResultsFolder, margin: float) -> Comparison:
+    """The folder's paired comparison with the reference at ``margin``, computed once.
+
+    The Verdict section and the decision table both show it; its bootstrap is
+    the costly part, so the result is kept on the folder.
+    """
+    if margin not in folder.comparisons:
+        folder.comparisons[margin] = compare(
+            folder.results,
+            folder.reference,
+            margin=margin,
+            per_recording=folder.per_recording,
+            allocation=folder.allocation,
+            order=folder.sensors,
+        )
+    return folder.comparisons[margin]
 
 
 def missing_reference_note(folder: ResultsFolder) -> str | None:
@@ -127,14 +145,7 @@ def verdict_blocks(
     if note is not None:
         return [*blocks, Paragraph(note)]
     try:
-        comparison = compare(
-            folder.results,
-            folder.reference,
-            margin=margin,
-            per_recording=folder.per_recording,
-            allocation=folder.allocation,
-            order=folder.sensors,
-        )
+        comparison = folder_comparison(folder, margin)
         findings = verdict(comparison)
     except SDTError as exc:
         return [*blocks, Paragraph(f"Not available: {exc}.")]
