@@ -66,7 +66,17 @@ ALLOWED: dict[str, set[str]] = {
     "severity": {"data", "errors", "seeding", "toml_files", "verdict"},
     "explore": _BASE
     | _IO
-    | {"bench", "data", "edge", "registry", "sensor_files", "specs", "stages", "toml_files"},
+    | {
+        "bench",
+        "data",
+        "edge",
+        "registry",
+        "sensor_files",
+        "severity",
+        "specs",
+        "stages",
+        "toml_files",
+    },
     "report": _IO
     | {
         "bench",

@@ -104,6 +104,12 @@ class BenchmarkConfig(BaseModel):
     allocation: str | None = Field(
         default=None, description="CSV/TOML allocation table replacing the scenario rule."
     )
+    zones: dict[str, str] | None = Field(
+        default=None,
+        description="ISO zone table per machine for the severity figures, e.g. {'Motor-4' = "
+        "'iso10816-3-group2-flexible'}: a built-in name, FILE.toml or FILE.toml#NAME "
+        "(default: the built-in choice for the synthetic pump and NLN-EMP, docs/severity.md).",
+    )
     repeats: int = Field(default=10, ge=1, description="Repetitions N (noise and seeds).")
     units: int | None = Field(
         default=None,
@@ -124,6 +130,14 @@ class BenchmarkConfig(BaseModel):
             raise ValueError("must name at least one entry (or be left out for all)")
         if value is not None and len(set(value)) != len(value):
             raise ValueError(f"lists a name twice: {value}")
+        return value
+
+    @field_validator("zones")
+    @classmethod
+    def _zones(cls, value: dict[str, str] | None) -> dict[str, str] | None:
+        for machine, table in (value or {}).items():
+            if not machine.strip() or not table.strip():
+                raise ValueError(f"{machine!r} = {table!r}: give MACHINE = TABLE, both named")
         return value
 
     @field_validator("sample")

@@ -28,6 +28,7 @@ __all__ = [
 
 #: Settings holding a file-system path.
 PATH_SETTINGS = ("data", "allocation")  # cache_dir is not written (bench.config)
+# and ``zones``: each value naming a zone-table file (``FILE.toml`` or ``FILE.toml#NAME``)
 #: First-line prefixes of the configuration files sdt writes.
 WRITTEN_HEADERS = ("# Resolved by sdt benchmark", "# The sweep as run by sdt explore")
 
@@ -42,21 +43,42 @@ def written_by_sdt(path: str | os.PathLike[str]) -> bool:
     return head.startswith(WRITTEN_HEADERS)
 
 
+def _zone_files(settings: dict[str, Any], move: Any) -> dict[str, Any]:
+    """``zones`` with ``move`` applied to each value naming a file (``FILE.toml[#NAME]``)."""
+    zones = settings.get("zones")
+    if not isinstance(zones, dict):
+        return settings
+    moved = {}
+    for machine, spec in zones.items():
+        path, sep, name = spec.partition("#") if isinstance(spec, str) else ("", "", "")
+        moved[machine] = move(path) + sep + name if path.endswith(".toml") else spec
+    return {**settings, "zones": moved}
+
+
 def relative_to(settings: dict[str, Any], folder: str | os.PathLike[str]) -> dict[str, Any]:
     """``settings`` with every path setting written relative to ``folder``."""
     start = os.path.abspath(folder)
+
+    def move(path: str) -> str:
+        return Path(os.path.relpath(os.path.abspath(path), start)).as_posix()
+
     out = dict(settings)
     for name in PATH_SETTINGS:
         if isinstance(out.get(name), str):
-            out[name] = Path(os.path.relpath(os.path.abspath(out[name]), start)).as_posix()
-    return out
+            out[name] = move(out[name])
+    return _zone_files(out, move)
 
 
 def resolve_written(settings: dict[str, Any], folder: str | os.PathLike[str]) -> dict[str, Any]:
     """``settings`` read from a file sdt wrote in ``folder``: relative paths joined to it."""
+
+    def move(path: str) -> str:
+        if os.path.isabs(path):
+            return path
+        return os.path.normpath(os.path.join(os.path.abspath(folder), path))
+
     out = dict(settings)
     for name in PATH_SETTINGS:
-        value = out.get(name)
-        if isinstance(value, str) and not os.path.isabs(value):
-            out[name] = os.path.normpath(os.path.join(os.path.abspath(folder), value))
-    return out
+        if isinstance(out.get(name), str):
+            out[name] = move(out[name])
+    return _zone_files(out, move)

@@ -79,13 +79,16 @@ DERIVED_ENTRIES = (*EXPLORE_FILES, "comparison.csv")
 _DERIVED = re.compile(r"^comparison_vs_.+\.csv$")
 #: Settings that change how a benchmark runs, never what it finds.
 RUN_ONLY_SETTINGS = frozenset({"jobs", "backend", "scheduler", "cache_dir", "report"})
+#: Settings that only grade what the runs found (the severity figures' zone tables):
+#: changing them resumes the folder, and the next report grades by the new tables.
+GRADING_SETTINGS = frozenset({"zones"})
 _OWN = frozenset({MARKER, LOCK, "runs", *OUTPUT_FILES, *REPORT_ENTRIES, *DERIVED_ENTRIES})
 _TEMPORARY = re.compile(r"^\..+\.tmp$")  # left by an atomic write cut short (io.atomic_path)
 
 
 def config_identity(config: BenchmarkConfig) -> dict[str, Any]:
     """The settings that define a benchmark's results (JSON-ready), paths as configured."""
-    return config.model_dump(mode="json", exclude=set(RUN_ONLY_SETTINGS))
+    return config.model_dump(mode="json", exclude=set(RUN_ONLY_SETTINGS | GRADING_SETTINGS))
 
 
 def _short(value: Any) -> str:

@@ -244,6 +244,11 @@ def _locked_run(
     from .planned import check_size, print_skipped
 
     plan = plan_benchmark(config, registry(ctx))
+    if config.zones:  # the zone tables are checked before any run (severity figures)
+        from ..severity import assign_tables
+
+        machines = sorted({r.machine for r in plan.recordings})
+        assign_tables(machines, configured=config.zones, where="[benchmark] zones")
     size = check_size(
         plan,
         out_dir,

@@ -18,6 +18,8 @@ def severity_agreement(
 ) -> tuple[Any, str]:
     """Zone agreement of ``folder``'s sensors with ``reference`` (the comparison's baseline).
 
+    The tables: ``--zones``, else the folder's ``[benchmark] zones``, else the defaults.
+
     None and the reason when it cannot be computed (no features, no table, no
     windows of ``reference``); a bad ``--zones`` value is an error.
     """
@@ -26,7 +28,13 @@ def severity_agreement(
     features = folder.features
     if features is None or features.empty or "V_RMS" not in features.columns:
         return None, "features.parquet with V_RMS is missing: no zone agreement"
-    assignments = assign_tables(sorted(features["machine"].unique()), zones or [])
+    config = folder.config
+    assignments = assign_tables(
+        sorted(features["machine"].unique()),
+        zones or [],
+        configured=config.zones if config is not None else None,
+        where=f"{folder.path / 'config.toml'}: [benchmark] zones",
+    )
     if not assignments:
         return None, "no zone table for these machines; give --zones TABLE or MACHINE=TABLE"
     if not (features["sensor"] == reference).any():

@@ -31,23 +31,71 @@ FIDELITY = {
 }
 
 
+def _level(level: float, alone: dict[str, float]) -> str:
+    """A minimum level; with zone agreement, which constraint alone gives it (F1, zones)."""
+    text = "none" if level != level else f"{level:g}"
+    if not alone:
+        return text
+    binding = [rule for rule, v in alone.items() if v == level or (v != v and level != level)]
+    return f"{text} ({', '.join(binding) or 'together'})"
+
+
 def _print_min_spec(min_spec: Any) -> None:
     """The minimum specification per machine and scenario (best classifier), as a table."""
     best = min_spec[min_spec["classifier"] == "best"]
     if best.empty:
         return
+    rules = {"F1": "min_level_macro_f1", "zones": "min_level_zones"}
+    rules = {rule: column for rule, column in rules.items() if column in best}
     wide = best.pivot_table(
-        index=["machine", "scenario"], columns="parameter", values="min_level", dropna=False
+        index=["machine", "scenario"],
+        columns="parameter",
+        values=["min_level", *rules.values()],
+        dropna=False,
     )
-    rows = [
-        [machine, scenario, *("none" if v != v else f"{v:g}" for v in values)]
-        for (machine, scenario), values in zip(wide.index, wide.to_numpy(), strict=True)
-    ]
+    rows = []
+    for machine, scenario in wide.index:
+        row = wide.loc[(machine, scenario)]
+        cells = [
+            _level(row[("min_level", p)], {r: row[(c, p)] for r, c in rules.items()})
+            for p in wide["min_level"].columns
+        ]
+        rows.append([machine, scenario, *cells])
+    wide = wide["min_level"]
     bases = best.drop_duplicates("parameter").set_index("parameter")["base_level"]
     columns = [f"{p} (base {'absent' if bases[p] != bases[p] else f'{bases[p]:g}'})" for p in wide]
     fidelity = FIDELITY[best["fidelity"].iloc[0]]
     title = f"Minimum specification: {best['target'].iloc[0]} (best classifier; {fidelity})"
     table(title, ["machine", "scenario", *columns], rows)
+    if rules:
+        console.print(
+            "(F1) / (zones): the constraint that sets the level alone; (together): neither "
+            "alone; see min_spec.csv",
+            highlight=False,
+            soft_wrap=True,
+        )
+
+
+def _print_zone_agreement(pareto: Any, fields: list[str], threshold: float | None) -> None:
+    """Each point's zone agreement per machine, with the ones below the target marked."""
+    if threshold is None or "zone_agreement" not in pareto:
+        return
+    shares = pareto.drop_duplicates(["point", "machine"])
+    wide = shares.pivot_table(index="point", columns="machine", values="zone_agreement")
+    params = shares.drop_duplicates("point").set_index("point")[fields].loc[wide.index]
+    order = params.sort_values(fields).index
+    rows = [
+        [
+            *(f"{params.at[point, f]:g}" for f in fields),
+            *(f"{100 * v:.1f} %{'' if v >= threshold else ' fails'}" for v in wide.loc[point]),
+        ]
+        for point in order
+    ]
+    title = (
+        f"Zone agreement per point: share of windows graded in the reference's ISO zone "
+        f"(target >= {100 * threshold:g} %)"
+    )
+    table(title, [*fields, *wide.columns], rows)
 
 
 def explore(
@@ -135,6 +183,7 @@ def explore(
                 soft_wrap=True,
             )
             raise typer.Exit(143 if watch.terminated else 130) from None
+    _print_zone_agreement(tables["pareto"], list(sweep.axes), sweep.target.zone_agreement)
     _print_min_spec(tables["min_spec"])
 
 

@@ -63,7 +63,8 @@ def exhaustive(
     with building(f"running the sweep ({size.line()})", smaller), progress_bar() as progress:
         result = run_benchmark(plan, out_dir, progress, warn)
         results = write_outputs(result, out_dir)
-        tables = write_explore(explore_plan, explore_table(explore_plan, results), out_dir)
+        table = explore_table(explore_plan, results, result.features)
+        tables = write_explore(explore_plan, table, out_dir)
     if report:
         from ..report import write_report
 

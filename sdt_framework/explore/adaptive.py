@@ -191,7 +191,7 @@ class Adaptive:
         """Screen, refine, write the answer's files; return the tables by name."""
         self.check_folder()
         screen = screen_plan(self.explore, self.registry)
-        screen_table = explore_table(screen, self._benchmark(screen.plan, self.out / "screen"))
+        screen_table = explore_table(screen, *self._benchmark(screen.plan, self.out / "screen"))
         screened = write_explore(
             screen, screen_table, self.out / "screen", fidelity="screen", sweep_file=False
         )
@@ -212,7 +212,7 @@ class Adaptive:
             done |= new
             previous, folder = folder, self.out / "rounds" / str(round_no)
             full = self._subset(done)
-            table = explore_table(full, self._benchmark(full.plan, folder, previous))
+            table = explore_table(full, *self._benchmark(full.plan, folder, previous))
             judged = verdicts(with_best(table), fields, target)
             todo = {f: next_groups(line, judged) for f, line in by_field.items()}
             why = "bisection between the last failing and the first passing level"
@@ -243,8 +243,13 @@ class Adaptive:
     def _fixed(self) -> set[str]:
         return {self.explore.plan.reference, self.explore.base.name}
 
-    def _benchmark(self, plan: Plan, folder: Path, previous: Path | None = None) -> pd.DataFrame:
-        """Run ``plan`` in ``folder`` (resuming it), the runs of ``previous`` copied in first."""
+    def _benchmark(
+        self, plan: Plan, folder: Path, previous: Path | None = None
+    ) -> tuple[pd.DataFrame, pd.DataFrame]:
+        """Run ``plan`` in ``folder`` (resuming it), the runs of ``previous`` copied in first.
+
+        Returns the tidy results and the windows' features (for zone agreement).
+        """
         preflight(plan, folder)  # claims and locks the folder
         try:
             if previous is not None:
@@ -253,7 +258,7 @@ class Adaptive:
                     if not target.exists():
                         shutil.copy2(run, target)
             result = run_benchmark(plan, folder, self.progress, self.warn)
-            return write_outputs(result, folder)
+            return write_outputs(result, folder), result.features
         finally:
             unlock_results_folder(folder)
 

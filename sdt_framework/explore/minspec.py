@@ -18,7 +18,9 @@ tolerable magnitude: a level meets only if every level of that magnitude
 (``-x`` and ``+x``) and of every smaller one does. A parameter with no
 demanding direction (``"neither"``, e.g. a correlation time) gets no level,
 and a note saying why. A point meets the target when its mean Macro-F1 over
-repetitions does.
+repetitions does (and, with ``zone_agreement``, its zone agreement too; the
+level each constraint alone would allow is then given beside, so the binding
+one is seen). Pass or fail is :mod:`.objectives`'s.
 """
 
 from __future__ import annotations
@@ -77,6 +79,7 @@ def min_spec(
                 at_base &= np.isclose(part[other].to_numpy(float), float(base_values[other]))
             line = part[at_base]
             note = "" if len(line) else _no_line(others, base_values)
+            by_rule: dict[str, float] = {}
             if demand[field] == "neither":
                 level = float("nan")
                 note = (
@@ -84,11 +87,12 @@ def min_spec(
                     "[sweep.cost] for a minimum level"
                 )
             else:
-                level = _least_demanding(
-                    line[field].to_numpy(float),
-                    line["meets"].to_numpy(bool),
-                    demand[field] == "higher",
-                )
+                levels, harder = line[field].to_numpy(float), demand[field] == "higher"
+                level = _least_demanding(levels, line["meets"].to_numpy(bool), harder)
+                for rule in ("macro_f1", "zones"):  # each constraint alone (zone agreement)
+                    if f"meets_{rule}" in line:
+                        alone = line[f"meets_{rule}"].to_numpy(bool)
+                        by_rule[rule] = _least_demanding(levels, alone, harder)
                 if len(line) and np.isnan(level):
                     note = "no level meets the target"
             rows.append(
@@ -101,13 +105,18 @@ def min_spec(
                     "base_level": float(base_values[field]),
                     "levels_tested": len(line),
                     "note": note,
+                    **{f"min_level_{rule}": value for rule, value in by_rule.items()},
                 }
             )
     columns = [*CELL, "parameter", "target", "threshold", "min_level", "base_level"]
-    return pd.DataFrame(rows, columns=[*columns, "levels_tested", "note"])
+    columns += ["levels_tested", "note"]
+    if "meets_zones" in judged:  # the least demanding level under each constraint alone
+        columns += ["min_level_macro_f1", "min_level_zones"]
+    return pd.DataFrame(rows, columns=columns)
 
 
 def meeting_points(results: pd.DataFrame, fields: Sequence[str], target: Target) -> pd.DataFrame:
-    """Every evaluated design point whose mean Macro-F1 meets the target, per cell."""
+    """Every evaluated design point that meets the target (and its zone agreement), per cell."""
     judged = verdicts(results, fields, target)
-    return judged[judged["meets"]].drop(columns="meets").reset_index(drop=True)
+    verdict = [c for c in ("meets", "meets_macro_f1", "meets_zones") if c in judged]
+    return judged[judged["meets"]].drop(columns=verdict).reset_index(drop=True)

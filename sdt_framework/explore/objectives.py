@@ -15,6 +15,7 @@ from collections.abc import Sequence
 
 import pandas as pd
 
+from ..errors import SDTError
 from .effects import CELL, point_means
 from .sweep import Target
 
@@ -40,9 +41,25 @@ def verdicts(results: pd.DataFrame, fields: Sequence[str], target: Target) -> pd
     """Per design point and cell: mean Macro-F1, the cell's threshold and ``meets``.
 
     A point meets the target when its mean over repetitions reaches the
-    threshold (a cell without a threshold, NaN, is never met).
+    threshold (a cell without a threshold, NaN, is never met). With
+    ``target.zone_agreement``, its share of windows graded in the reference's
+    ISO zone on that machine (the table's ``zone_agreement`` column,
+    :mod:`.zones`) must reach it too: ``meets_macro_f1`` and ``meets_zones``
+    say which constraint holds, ``meets`` is both.
     """
     means = point_means(results[results["role"] == "point"], fields)
     joined = means.join(thresholds(results, target), on=CELL)
     joined["meets"] = joined["macro_f1"] >= joined["threshold"]
+    if target.zone_agreement is None:
+        return joined
+    if "zone_agreement" not in results.columns:
+        raise SDTError(
+            "target.zone_agreement needs each point's zone agreement, and these results "
+            "carry none (features.parquet with V_RMS is missing)"
+        )
+    shares = results.groupby(["point", "machine"], sort=True)["zone_agreement"].first()
+    joined = joined.join(shares, on=["point", "machine"])
+    joined["meets_macro_f1"] = joined["meets"]
+    joined["meets_zones"] = joined["zone_agreement"] >= target.zone_agreement
+    joined["meets"] = joined["meets_macro_f1"] & joined["meets_zones"]
     return joined

@@ -10,6 +10,7 @@ min_spec.csv           least demanding level of each parameter meeting the targe
 min_spec_points.csv    every evaluated point meeting the target
 pareto.csv             cost, mean Macro-F1 and battery life (2xAA) of every point, whether it
                        is on the cost/Macro-F1 front and on the front with battery life
+                       (and its zone agreement, when the target asks for it)
 (each analysis table has a ``fidelity`` column: "full" or "screen")
 sweep.toml             the sweep as run (re-run or resume with ``sdt explore sweep.toml``)
 
@@ -95,6 +96,9 @@ def write_explore(
     points["cost"] = point_costs(points, base_values, sweep, _base_cost(explore), demand)
     points["battery_life_years"] = _lives(explore)  # issue 34 hook: NaN without supply figures
     means = point_means(analysed[analysed["role"] == "point"], fields)
+    if "zone_agreement" in analysed:  # the target's second objective (explore.zones)
+        shares = analysed.groupby(["point", "machine"])["zone_agreement"].first()
+        means = means.join(shares, on=["point", "machine"])
     pareto = with_front(means.merge(points[["point", "cost", "battery_life_years"]], on="point"))
     pareto["on_front_with_life"] = _front_with_life(pareto)  # issue 34 hook
     tables = {

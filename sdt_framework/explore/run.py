@@ -30,6 +30,7 @@ from .points import Point, build_points, left_out
 from .size import design_size, sweep_estimate
 from .stage_axes import StageAxis, base_value, check_stage_axes
 from .sweep import Sweep
+from .zones import with_zone_agreement, zone_assignments
 
 __all__ = ["ExplorePlan", "explore_table", "plan_explore"]
 
@@ -111,6 +112,8 @@ def plan_explore(
     if probe.reference not in names:  # the reference follows the data, as the probe found
         names = [probe.reference, *names]
     plan = plan_benchmark(_config(data, names, where), registry)
+    if sweep.target.zone_agreement is not None or plan.config.zones:
+        zone_assignments(plan, where, every=sweep.target.zone_agreement is not None)
     points, skipped = left_out(points, skipped, plan.skipped_sensors, list(sweep.axes))
     if not points:
         raise SDTError(
@@ -130,12 +133,16 @@ def _config(data: dict[str, Any], sensors: list[str] | None, where: str) -> Benc
     return validate_config({**data, "sensors": sensors}, where)
 
 
-def explore_table(explore: ExplorePlan, results: pd.DataFrame) -> pd.DataFrame:
+def explore_table(
+    explore: ExplorePlan, results: pd.DataFrame, features: pd.DataFrame | None = None
+) -> pd.DataFrame:
     """The tidy exploration table: benchmark results plus each point's parameters.
 
     One row per point x machine x scenario x classifier x repetition; the
     reference and the base carry ``role`` "reference" and "base", the base
-    its own values of the swept parameters, the reference none.
+    its own values of the swept parameters, the reference none. With the
+    benchmark's ``features`` and a target asking for zone agreement, each row
+    also carries its point's ``zone_agreement`` on that machine (:mod:`.zones`).
     """
     fields = list(explore.sweep.axes)
     ref = explore.plan.reference
@@ -158,4 +165,7 @@ def explore_table(explore: ExplorePlan, results: pd.DataFrame) -> pd.DataFrame:
     table.loc[table["sensor"] == ref, "role"] = "reference"
     table = table[table["status"] == "ok"].rename(columns={"sensor": "point"})
     table["design_index"] = table["design_index"].fillna(-1).astype(int)
-    return table.reset_index(drop=True)
+    table = table.reset_index(drop=True)
+    if features is None:
+        return table
+    return with_zone_agreement(table, features, explore.plan, explore.sweep.target)

@@ -179,7 +179,8 @@ class CostTerm(_Model):
 
 
 class Target(_Model):
-    """The diagnostic performance a specification must reach (give exactly one)."""
+    """What a specification must reach: one Macro-F1 rule, and optionally ``zone_agreement``
+    (the share of windows graded in the reference's ISO zone, :mod:`.zones`) beside it."""
 
     macro_f1: float | None = Field(default=None, gt=0, le=1, description="Absolute Macro-F1.")
     fraction_of_reference: float | None = Field(
@@ -195,6 +196,10 @@ class Target(_Model):
         description="Largest Macro-F1 loss to the base sensor (how much error it tolerates).",
     )
 
+    zone_agreement: float | None = Field(
+        default=None, gt=0, le=1, description="Also: share of windows in the reference's ISO zone."
+    )
+
     @model_validator(mode="after")
     def _exactly_one(self) -> Target:
         given = [self.macro_f1, self.fraction_of_reference, self.max_loss, self.max_loss_to_base]
@@ -207,12 +212,15 @@ class Target(_Model):
     def describe(self) -> str:
         """The target in words, for tables and the report."""
         if self.macro_f1 is not None:
-            return f"Macro-F1 >= {self.macro_f1:g}"
-        if self.fraction_of_reference is not None:
-            return f">= {self.fraction_of_reference:g} x reference Macro-F1"
-        if self.max_loss is not None:
-            return f"loss to reference <= {self.max_loss:g}"
-        return f"loss to base <= {self.max_loss_to_base:g}"
+            words = f"Macro-F1 >= {self.macro_f1:g}"
+        elif self.fraction_of_reference is not None:
+            words = f">= {self.fraction_of_reference:g} x reference Macro-F1"
+        elif self.max_loss is not None:
+            words = f"loss to reference <= {self.max_loss:g}"
+        else:
+            words = f"loss to base <= {self.max_loss_to_base:g}"
+        zones = self.zone_agreement
+        return words if zones is None else f"{words} and zone agreement >= {zones:g}"
 
 
 class Sweep(_Model):

@@ -83,7 +83,8 @@ def _tables_used(agreement: Agreement) -> list[Block]:
         blocks.append(
             Paragraph(
                 f"No zone table for {', '.join(agreement.unassigned)}: left out "
-                f"(`sdt compare --zones MACHINE=TABLE` grades it)."
+                f"(`zones = {{ MACHINE = 'TABLE' }}` under `[benchmark]` in the config, or "
+                f"`sdt compare --zones MACHINE=TABLE`, grades it)."
             )
         )
     return blocks
@@ -157,7 +158,12 @@ def severity_blocks(
         return [*blocks, Paragraph("Not shown: features.parquet with V_RMS is missing.")]
     seed = folder.config.seed if folder.config is not None else 0
     try:
-        assignments = assign_tables(sorted(features["machine"].unique()))
+        config = folder.config
+        assignments = assign_tables(
+            sorted(features["machine"].unique()),
+            configured=config.zones if config is not None else None,
+            where=f"{folder.path / 'config.toml'}: [benchmark] zones",
+        )
         agreement = zone_agreement(features, folder.reference, assignments, seed=seed)
     except SDTError as exc:
         return [*blocks, Paragraph(f"Not shown: {exc}")]

@@ -13,13 +13,24 @@ ZoneTable, load_zone_file, resolve_table, builtin_tables, assign_tables, grade
 zone_agreement(features, reference, assignments) -> Agreement
     Zone agreement, zone confusion, dangerous (better-zone) share and criterion II
     alarm agreement per machine, channel and sensor, with recording-level intervals.
+window_agreement(features, reference, assignments) -> DataFrame
+    The pooled share of windows in the reference's zone per machine and sensor, no
+    intervals (the objective ``sdt explore`` checks per design point).
 defect_frequencies, BEARINGS ; envelope_spectrum, velocity_spectrum, asd, running_speed
     Bearing defect lines and the spectra the field reads, with their scaling.
 """
 
 from __future__ import annotations
 
-from .agreement import ALARM_FRACTION, HEADROOM, Agreement, alarm_thresholds, zone_agreement
+from .agreement import (
+    ALARM_FRACTION,
+    HEADROOM,
+    Agreement,
+    alarm_thresholds,
+    paired_zones,
+    window_agreement,
+    zone_agreement,
+)
 from .bearings import BEARINGS, defect_frequencies, defect_orders
 from .spectra import (
     Spectrum,
@@ -65,8 +76,10 @@ __all__ = [
     "envelope_spectrum",
     "grade",
     "load_zone_file",
+    "paired_zones",
     "resolve_table",
     "running_speed",
     "velocity_spectrum",
+    "window_agreement",
     "zone_agreement",
 ]

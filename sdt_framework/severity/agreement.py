@@ -39,6 +39,7 @@ __all__ = [
     "Agreement",
     "alarm_thresholds",
     "paired_zones",
+    "window_agreement",
     "zone_agreement",
 ]
 
@@ -84,6 +85,23 @@ def paired_zones(
         pairs[f"zone_{side}"] = (values[:, None] > cuts).sum(axis=1)
     pairs["healthy"] = pairs["severity"].isna().to_numpy()
     return pairs
+
+
+def window_agreement(
+    features: pd.DataFrame, reference: str, assignments: dict[str, Assignment]
+) -> pd.DataFrame:
+    """Per machine and sensor, all channels: the share of windows in the reference's zone.
+
+    The point estimate of :func:`zone_agreement`'s pooled row, without its
+    intervals or alarms (``sdt explore`` asks it of every design point).
+    """
+    pairs = paired_zones(features, reference, assignments)
+    pairs["same"] = pairs["zone_ref"] == pairs["zone_sensor"]
+    pairs["better"] = pairs["zone_sensor"] < pairs["zone_ref"]
+    grouped = pairs.groupby(["machine", "sensor"], sort=True)
+    return grouped.agg(
+        zone_agreement=("same", "mean"), share_better=("better", "mean"), n_windows=("same", "size")
+    ).reset_index()
 
 
 def alarm_thresholds(pairs: pd.DataFrame, assignments: dict[str, Assignment]) -> pd.DataFrame:

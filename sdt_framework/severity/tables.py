@@ -15,6 +15,7 @@ a unit other than mm/s, another band) is one :class:`SpecFileError` line.
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -209,13 +210,32 @@ class Assignment:
     reason: str
 
 
-def assign_tables(machines: list[str], choices: list[str] = ()) -> dict[str, Assignment]:
-    """The table for each machine: ``choices`` ("TABLE" or "MACHINE=TABLE"), else the default.
+def assign_tables(
+    machines: list[str],
+    choices: list[str] = (),
+    configured: Mapping[str, str] | None = None,
+    where: str = "[benchmark] zones",
+) -> dict[str, Assignment]:
+    """The table for each machine: ``choices`` ("TABLE" or "MACHINE=TABLE", ``--zones``),
+    else ``configured`` (the benchmark config's ``zones``, MACHINE -> TABLE), else the default.
 
-    A machine with neither a choice nor a default (a user's dataset) gets no
-    table and is left out of the severity figures; the caller says so.
+    A machine with none of them (a user's dataset) gets no table and is left
+    out of the severity figures; the caller says so. A configured machine that
+    is not in ``machines`` or a table that does not resolve is one line naming
+    ``where`` (the config file) and the field.
     """
-    chosen: dict[str, str] = {}
+    chosen: dict[str, tuple[str, str]] = {}
+    for machine, table in (configured or {}).items():
+        if machine not in machines:
+            raise SDTError(
+                f"{where}: {machine}: no machine {machine!r} here; machines are "
+                f"{', '.join(machines)} (fix the name or remove the line)"
+            )
+        try:
+            resolve_table(table)
+        except SDTError as exc:
+            raise SDTError(f"{where}: {machine}: {exc}") from None
+        chosen[machine] = (table, "given in the benchmark config ([benchmark] zones)")
     for choice in choices:
         machine, sep, table = choice.rpartition("=")
         if sep and machine not in machines:
@@ -224,11 +244,12 @@ def assign_tables(machines: list[str], choices: list[str] = ()) -> dict[str, Ass
                 f"machines are {', '.join(machines)}"
             )
         for target in [machine] if sep else machines:
-            chosen[target] = table
+            chosen[target] = (table, "given (--zones)")
     out: dict[str, Assignment] = {}
     for machine in machines:
         if machine in chosen:
-            out[machine] = Assignment(machine, resolve_table(chosen[machine]), "given (--zones)")
+            table, reason = chosen[machine]
+            out[machine] = Assignment(machine, resolve_table(table), reason)
         elif machine in DEFAULT_TABLES:
             name, reason = DEFAULT_TABLES[machine]
             out[machine] = Assignment(machine, builtin_tables()[name], reason)
