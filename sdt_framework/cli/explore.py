@@ -98,6 +98,28 @@ def _print_zone_agreement(pareto: Any, fields: list[str], threshold: float | Non
     table(title, [*fields, *wide.columns], rows)
 
 
+def _print_life_front(pareto: Any) -> None:
+    """Each point's cost, battery life and Macro F1, and the cells where it is on the front."""
+    from ..explore.output import life_front
+
+    front = life_front(pareto)
+    if front.empty:
+        return
+    rows = [
+        [
+            r.point,
+            f"{r.cost:.2f}",
+            f"{r.battery_life_years:.2f}",
+            f"{r.macro_f1:.3f}",
+            f"{r.on_front} of {r.cells}",
+        ]
+        for r in front.itertuples()
+    ]
+    title = "Battery life (2xAA, a report per 10 min), cost and Macro F1 (best classifier)"
+    columns = ["point", "cost", "life (years)", "Macro F1 (mean)", "on front with life"]
+    table(title, columns, rows)
+
+
 def explore(
     ctx: typer.Context,
     sweep_file: Path | None = typer.Argument(
@@ -185,6 +207,8 @@ def explore(
             raise typer.Exit(143 if watch.terminated else 130) from None
     _print_zone_agreement(tables["pareto"], list(sweep.axes), sweep.target.zone_agreement)
     _print_min_spec(tables["min_spec"])
+    if "pareto" in tables:
+        _print_life_front(tables["pareto"])
 
 
 def _run(

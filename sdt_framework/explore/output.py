@@ -22,6 +22,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 import tomli_w
 
@@ -37,7 +38,7 @@ from .pareto import demands, point_costs, with_front
 from .run import ExplorePlan
 from .sensitivity import sensitivity as ranking
 
-__all__ = ["ANALYSES", "EXPLORE_FILES", "write_explore", "write_sweep_file"]
+__all__ = ["ANALYSES", "EXPLORE_FILES", "life_front", "write_explore", "write_sweep_file"]
 
 #: the tables that answer a question, each with the fidelity it rests on
 ANALYSES = ("main_effects", "sensitivity", "min_spec", "min_spec_points", "pareto")
@@ -64,6 +65,33 @@ def _front_with_life(pareto: pd.DataFrame) -> pd.Series:
         objectives = part[["cost", "macro_f1", "battery_life_years"]].to_numpy(float)
         out[part.index] = non_dominated(objectives * [1.0, -1.0, -1.0])
     return out
+
+
+def life_front(pareto: pd.DataFrame) -> pd.DataFrame:
+    """Per point, for the best classifier: cost, battery life, mean Macro F1, front membership.
+
+    One row per point with a battery life, longest life first: its cost, its
+    life (2xAA, one report per 10 min), its Macro F1 averaged over the
+    machine x scenario cells, and in how many of those cells it is on the
+    front of cost, Macro F1 and battery life together (``on_front_with_life``
+    of pareto.csv). Empty when no point has a life (no supply figures).
+    """
+    best = pareto[pareto["classifier"] == "best"]
+    if best.empty:
+        best = pareto
+    best = best[np.isfinite(best["battery_life_years"].to_numpy(float))]
+    columns = ["point", "cost", "battery_life_years", "macro_f1", "on_front", "cells"]
+    if best.empty:
+        return pd.DataFrame(columns=columns)
+    grouped = best.groupby("point", sort=False)
+    out = grouped.agg(
+        cost=("cost", "first"),
+        battery_life_years=("battery_life_years", "first"),
+        macro_f1=("macro_f1", "mean"),
+        on_front=("on_front_with_life", "sum"),
+        cells=("on_front_with_life", "size"),
+    ).reset_index()
+    return out.sort_values(["battery_life_years", "cost"], ascending=[False, True])[columns]
 
 
 def write_explore(
