@@ -11,7 +11,8 @@ from typing import TYPE_CHECKING, Any
 
 import typer
 
-from .common import console, err_console, registry, table
+from .common import console, err_console, registry
+from .explore_tables import print_tables
 
 if TYPE_CHECKING:
     from ..bench.estimate import Estimate
@@ -24,100 +25,6 @@ def _example() -> str:
 
 
 STRATEGIES = ("auto", "adaptive", "exhaustive")
-#: what each fidelity means, in the printed titles
-FIDELITY = {
-    "full": "full protocol",
-    "screen": "screen: lr and knn, 1 repetition",
-}
-
-
-def _level(level: float, alone: dict[str, float]) -> str:
-    """A minimum level; with zone agreement, which constraint alone gives it (F1, zones)."""
-    text = "none" if level != level else f"{level:g}"
-    if not alone:
-        return text
-    binding = [rule for rule, v in alone.items() if v == level or (v != v and level != level)]
-    return f"{text} ({', '.join(binding) or 'together'})"
-
-
-def _print_min_spec(min_spec: Any) -> None:
-    """The minimum specification per machine and scenario (best classifier), as a table."""
-    best = min_spec[min_spec["classifier"] == "best"]
-    if best.empty:
-        return
-    rules = {"F1": "min_level_macro_f1", "zones": "min_level_zones"}
-    rules = {rule: column for rule, column in rules.items() if column in best}
-    wide = best.pivot_table(
-        index=["machine", "scenario"],
-        columns="parameter",
-        values=["min_level", *rules.values()],
-        dropna=False,
-    )
-    rows = []
-    for machine, scenario in wide.index:
-        row = wide.loc[(machine, scenario)]
-        cells = [
-            _level(row[("min_level", p)], {r: row[(c, p)] for r, c in rules.items()})
-            for p in wide["min_level"].columns
-        ]
-        rows.append([machine, scenario, *cells])
-    wide = wide["min_level"]
-    bases = best.drop_duplicates("parameter").set_index("parameter")["base_level"]
-    columns = [f"{p} (base {'absent' if bases[p] != bases[p] else f'{bases[p]:g}'})" for p in wide]
-    fidelity = FIDELITY[best["fidelity"].iloc[0]]
-    title = f"Minimum specification: {best['target'].iloc[0]} (best classifier; {fidelity})"
-    table(title, ["machine", "scenario", *columns], rows)
-    if rules:
-        console.print(
-            "(F1) / (zones): the constraint that sets the level alone; (together): neither "
-            "alone; see min_spec.csv",
-            highlight=False,
-            soft_wrap=True,
-        )
-
-
-def _print_zone_agreement(pareto: Any, fields: list[str], threshold: float | None) -> None:
-    """Each point's zone agreement per machine, with the ones below the target marked."""
-    if threshold is None or "zone_agreement" not in pareto:
-        return
-    shares = pareto.drop_duplicates(["point", "machine"])
-    wide = shares.pivot_table(index="point", columns="machine", values="zone_agreement")
-    params = shares.drop_duplicates("point").set_index("point")[fields].loc[wide.index]
-    order = params.sort_values(fields).index
-    rows = [
-        [
-            *(f"{params.at[point, f]:g}" for f in fields),
-            *(f"{100 * v:.1f} %{'' if v >= threshold else ' fails'}" for v in wide.loc[point]),
-        ]
-        for point in order
-    ]
-    title = (
-        f"Zone agreement per point: share of windows graded in the reference's ISO zone "
-        f"(target >= {100 * threshold:g} %)"
-    )
-    table(title, [*fields, *wide.columns], rows)
-
-
-def _print_life_front(pareto: Any) -> None:
-    """Each point's cost, battery life and Macro F1, and the cells where it is on the front."""
-    from ..explore.output import life_front
-
-    front = life_front(pareto)
-    if front.empty:
-        return
-    rows = [
-        [
-            r.point,
-            f"{r.cost:.2f}",
-            f"{r.battery_life_years:.2f}",
-            f"{r.macro_f1:.3f}",
-            f"{r.on_front} of {r.cells}",
-        ]
-        for r in front.itertuples()
-    ]
-    title = "Battery life (2xAA, a report per 10 min), cost and Macro F1 (best classifier)"
-    columns = ["point", "cost", "life (years)", "Macro F1 (mean)", "on front with life"]
-    table(title, columns, rows)
 
 
 def explore(
@@ -205,10 +112,7 @@ def explore(
                 soft_wrap=True,
             )
             raise typer.Exit(143 if watch.terminated else 130) from None
-    _print_zone_agreement(tables["pareto"], list(sweep.axes), sweep.target.zone_agreement)
-    _print_min_spec(tables["min_spec"])
-    if "pareto" in tables:
-        _print_life_front(tables["pareto"])
+    print_tables(tables, list(sweep.axes), sweep.target)
 
 
 def _run(

@@ -1,16 +1,18 @@
 """Battery life as an objective beside Macro F1 and cost: what ``sdt explore`` calls.
 
 :func:`point_lives` gives the node's battery life (years, :mod:`.node`) of each
-design point's sensor, NaN where the sensor has no measuring current on
-record (a swept profile keeps its base's supply figures; a point whose rate
-differs from the base's keeps the base's measuring current, which the
-datasheet gives per mode, so the life of such a point is the base's current at
-the point's window and rate). :func:`non_dominated` is the Pareto mask over
-any number of objectives to minimise (cost, -Macro F1, -life).
+design point's sensor, NaN where the sensor has no measuring current on record
+(:func:`point_life` also says why). A swept profile keeps its base's supply
+figures; a point whose rate differs from the base's keeps the base's measuring
+current, which the datasheet gives per mode, so the life of such a point is
+the base's current at the point's window and rate. :func:`non_dominated` is
+the Pareto mask over any number of objectives to minimise (cost, -Macro F1,
+-life).
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 import numpy as np
@@ -20,7 +22,26 @@ from ..specs import FeatureSetSpec, SensorSpec
 from .cells import Cell, cell
 from .node import NodeSettings, battery_life_years
 
-__all__ = ["non_dominated", "point_lives"]
+__all__ = ["non_dominated", "point_life", "point_lives"]
+
+
+def point_life(
+    sensor: SensorSpec,
+    feature_set: FeatureSetSpec,
+    battery: Cell,
+    settings: NodeSettings | None = None,
+) -> tuple[float, str]:
+    """Battery life in years and ``""``; or NaN and why it cannot be computed (never filled in)."""
+    supply = sensor.supply
+    if supply is None:
+        return math.nan, "no supply figures on record"
+    if supply.measure_ua.value is None:
+        return math.nan, f"no measuring supply current on record ({supply.measure_ua.cited()})"
+    try:
+        years = battery_life_years(sensor, feature_set, battery, settings)
+    except SDTError as exc:  # e.g. an interval too short for this point's window
+        return math.nan, str(exc)
+    return (math.nan, "no measuring supply current on record") if years is None else (years, "")
 
 
 def point_lives(
@@ -31,15 +52,7 @@ def point_lives(
 ) -> np.ndarray:
     """Battery life in years per sensor; NaN where it cannot be computed (no supply figure)."""
     battery = battery if isinstance(battery, Cell) else cell(battery)
-    out = np.full(len(sensors), np.nan)
-    for i, sensor in enumerate(sensors):
-        try:
-            years = battery_life_years(sensor, feature_set, battery, settings)
-        except SDTError:  # e.g. an interval too short for this point's window
-            years = None
-        if years is not None:
-            out[i] = years
-    return out
+    return np.array([point_life(s, feature_set, battery, settings)[0] for s in sensors], float)
 
 
 def non_dominated(minimise: np.ndarray) -> np.ndarray:

@@ -18,9 +18,12 @@ tolerable magnitude: a level meets only if every level of that magnitude
 (``-x`` and ``+x``) and of every smaller one does. A parameter with no
 demanding direction (``"neither"``, e.g. a correlation time) gets no level,
 and a note saying why. A point meets the target when its mean Macro-F1 over
-repetitions does (and, with ``zone_agreement``, its zone agreement too; the
-level each constraint alone would allow is then given beside, so the binding
-one is seen). Pass or fail is :mod:`.objectives`'s.
+repetitions does (and, with ``zone_agreement`` or ``min_battery_life_years``,
+each of those too; the level each constraint alone would allow is then given
+beside, ``min_level_<rule>``, so the binding one is seen). Battery life is
+asked of the chosen level only: more demand shortens it rather than making
+it surer, so "every more demanding level too" would refuse every answer.
+Pass or fail is :mod:`.objectives`'s.
 """
 
 from __future__ import annotations
@@ -31,22 +34,32 @@ import numpy as np
 import pandas as pd
 
 from .effects import CELL
-from .objectives import thresholds, verdicts
-from .sweep import Target
+from .objectives import POINTWISE, constraints, diagnosis_meets, thresholds, verdicts
+from .target import Target
 
 __all__ = ["meeting_points", "min_spec", "thresholds"]
 
 
-def _least_demanding(levels: np.ndarray, meets: np.ndarray, higher_is_harder: bool) -> float:
+def _least_demanding(
+    levels: np.ndarray, meets: np.ndarray, higher_is_harder: bool, holds: np.ndarray | None = None
+) -> float:
+    """The least demanding level that meets, with every more demanding level meeting too.
+
+    ``holds`` (per row, e.g. battery life) is asked of the chosen level alone:
+    a constraint that more demand does not help (:data:`.objectives.POINTWISE`).
+    """
     if not higher_is_harder:
         levels = np.abs(levels)  # an error's magnitude: -x and +x are one specification
     unique, group = np.unique(levels, return_inverse=True)
     # a magnitude meets when every level of it does
     group_meets = np.bincount(group, weights=(~meets).astype(float), minlength=len(unique)) == 0
-    if not higher_is_harder:
-        unique, group_meets = unique[::-1], group_meets[::-1]  # least demanding first
+    held = np.ones(len(unique), dtype=bool)
+    if holds is not None:
+        held = np.bincount(group, weights=(~holds).astype(float), minlength=len(unique)) == 0
+    if not higher_is_harder:  # least demanding first
+        unique, group_meets, held = unique[::-1], group_meets[::-1], held[::-1]
     # all more demanding levels meet: suffix-and of ``group_meets``
-    robust = np.flip(np.logical_and.accumulate(np.flip(group_meets)))
+    robust = np.flip(np.logical_and.accumulate(np.flip(group_meets))) & held
     return float(unique[np.argmax(robust)]) if robust.any() else float("nan")
 
 
@@ -69,6 +82,7 @@ def min_spec(
 ) -> pd.DataFrame:
     """One row per cell and parameter: the minimum level meeting the target (NaN if none)."""
     judged = verdicts(results, fields, target)
+    rules = [] if not constraints(target) else ["macro_f1", *constraints(target)]
     rows: list[dict[str, object]] = []
     for cell, part in judged.groupby(CELL, sort=True):
         threshold = float(part["threshold"].iloc[0])
@@ -88,13 +102,22 @@ def min_spec(
                 )
             else:
                 levels, harder = line[field].to_numpy(float), demand[field] == "higher"
-                level = _least_demanding(levels, line["meets"].to_numpy(bool), harder)
-                for rule in ("macro_f1", "zones"):  # each constraint alone (zone agreement)
-                    if f"meets_{rule}" in line:
-                        alone = line[f"meets_{rule}"].to_numpy(bool)
+                diagnosis = diagnosis_meets(line).to_numpy(bool)
+                holds = line["meets_life"].to_numpy(bool) if "life" in rules else None
+                level = _least_demanding(levels, diagnosis, harder, holds)
+                for rule in rules:  # each constraint alone (zone agreement, battery life)
+                    alone = line[f"meets_{rule}"].to_numpy(bool)
+                    if rule in POINTWISE:
+                        by_rule[rule] = _least_demanding(levels, alone | True, harder, alone)
+                    else:
                         by_rule[rule] = _least_demanding(levels, alone, harder)
                 if len(line) and np.isnan(level):
                     note = "no level meets the target"
+                    if "life" in rules and line["battery_life_years"].isna().all():
+                        note += (
+                            ": no battery life (no supply current on record for these "
+                            "points), so the life constraint cannot be met"
+                        )
             rows.append(
                 {
                     **dict(zip(CELL, cell, strict=True)),
@@ -110,13 +133,12 @@ def min_spec(
             )
     columns = [*CELL, "parameter", "target", "threshold", "min_level", "base_level"]
     columns += ["levels_tested", "note"]
-    if "meets_zones" in judged:  # the least demanding level under each constraint alone
-        columns += ["min_level_macro_f1", "min_level_zones"]
+    columns += [f"min_level_{rule}" for rule in rules]  # each constraint alone, when several
     return pd.DataFrame(rows, columns=columns)
 
 
 def meeting_points(results: pd.DataFrame, fields: Sequence[str], target: Target) -> pd.DataFrame:
-    """Every evaluated design point that meets the target (and its zone agreement), per cell."""
+    """Every evaluated design point that meets the target (every constraint of it), per cell."""
     judged = verdicts(results, fields, target)
-    verdict = [c for c in ("meets", "meets_macro_f1", "meets_zones") if c in judged]
+    verdict = [c for c in judged.columns if c == "meets" or c.startswith("meets_")]
     return judged[judged["meets"]].drop(columns=verdict).reset_index(drop=True)

@@ -3,9 +3,9 @@
 Every answer that says "meets" or "fails" (the minimum specification, the
 meeting points, the adaptive refinement's bisection) asks :func:`verdicts`,
 and :func:`verdicts` asks :func:`thresholds`. An objective or constraint
-added later (zone agreement, battery life) is a field of
-:class:`~sdt_framework.explore.sweep.Target` plus its rule here: a column of
-per-point values compared with a threshold, combined into ``meets``. Nothing
+added later is a field of :class:`~sdt_framework.explore.target.Target` plus
+its entry in :data:`CONSTRAINTS` here (zone agreement, battery life): a column
+of per-point values compared with a threshold, combined into ``meets``. Nothing
 else in the package decides pass or fail.
 """
 
@@ -17,9 +17,16 @@ import pandas as pd
 
 from ..errors import SDTError
 from .effects import CELL, point_means
-from .sweep import Target
+from .target import Target
 
-__all__ = ["thresholds", "verdicts"]
+__all__ = [
+    "CONSTRAINTS",
+    "POINTWISE",
+    "constraints",
+    "diagnosis_meets",
+    "thresholds",
+    "verdicts",
+]
 
 
 def thresholds(results: pd.DataFrame, target: Target) -> pd.Series:
@@ -37,29 +44,81 @@ def thresholds(results: pd.DataFrame, target: Target) -> pd.Series:
     return (reference - target.max_loss).rename("threshold")
 
 
+#: each constraint beside Macro F1: its name in ``meets_<name>``, the target's field,
+#: the table's column of per-point values, what that value is per, and why it may be absent
+CONSTRAINTS: dict[str, tuple[str, str, tuple[str, ...], str]] = {
+    "zones": (
+        "zone_agreement",
+        "zone_agreement",
+        ("point", "machine"),
+        "features.parquet with V_RMS is missing",
+    ),
+    "life": (
+        "min_battery_life_years",
+        "battery_life_years",
+        ("point",),
+        "the table was built without the sweep's target",
+    ),
+}
+
+
+#: constraints that are a fact of each point's design, not an estimate from noisy runs: the
+#: minimum specification asks them of its chosen level only, not of every more demanding
+#: one (a faster part drains the battery sooner: life falls as the demand rises)
+POINTWISE = ("life",)
+
+
+def constraints(target: Target) -> dict[str, float]:
+    """The constraints ``target`` asks for beside Macro F1, by rule name, with their thresholds."""
+    asked = {rule: getattr(target, field) for rule, (field, *_) in CONSTRAINTS.items()}
+    return {rule: float(value) for rule, value in asked.items() if value is not None}
+
+
 def verdicts(results: pd.DataFrame, fields: Sequence[str], target: Target) -> pd.DataFrame:
     """Per design point and cell: mean Macro-F1, the cell's threshold and ``meets``.
 
     A point meets the target when its mean over repetitions reaches the
-    threshold (a cell without a threshold, NaN, is never met). With
-    ``target.zone_agreement``, its share of windows graded in the reference's
-    ISO zone on that machine (the table's ``zone_agreement`` column,
-    :mod:`.zones`) must reach it too: ``meets_macro_f1`` and ``meets_zones``
-    say which constraint holds, ``meets`` is both.
+    threshold (a cell without a threshold, NaN, is never met), and every
+    constraint the target adds holds too:
+
+    - ``zone_agreement``: its share of windows graded in the reference's ISO
+      zone on that machine (the table's ``zone_agreement`` column, :mod:`.zones`);
+    - ``min_battery_life_years``: its node's battery life (``battery_life_years``,
+      :mod:`.life`); a point without one (no supply current on record) never meets it.
+
+    With any constraint, ``meets_macro_f1`` and ``meets_zones`` / ``meets_life``
+    say which holds, and ``meets`` is all of them.
     """
     means = point_means(results[results["role"] == "point"], fields)
     joined = means.join(thresholds(results, target), on=CELL)
     joined["meets"] = joined["macro_f1"] >= joined["threshold"]
-    if target.zone_agreement is None:
+    asked = constraints(target)
+    if not asked:
         return joined
-    if "zone_agreement" not in results.columns:
-        raise SDTError(
-            "target.zone_agreement needs each point's zone agreement, and these results "
-            "carry none (features.parquet with V_RMS is missing)"
-        )
-    shares = results.groupby(["point", "machine"], sort=True)["zone_agreement"].first()
-    joined = joined.join(shares, on=["point", "machine"])
     joined["meets_macro_f1"] = joined["meets"]
-    joined["meets_zones"] = joined["zone_agreement"] >= target.zone_agreement
-    joined["meets"] = joined["meets_macro_f1"] & joined["meets_zones"]
+    for rule, threshold in asked.items():
+        field, column, per, why = CONSTRAINTS[rule]
+        if column not in results.columns:
+            raise SDTError(
+                f"target.{field} needs each point's {column.replace('_', ' ')}, and these "
+                f"results carry none ({why})"
+            )
+        values = results.groupby(list(per), sort=True)[column].first()
+        joined = joined.join(values, on=list(per))
+        joined[f"meets_{rule}"] = joined[column] >= threshold  # NaN (unknown) never meets
+        joined["meets"] &= joined[f"meets_{rule}"]
     return joined
+
+
+def diagnosis_meets(judged: pd.DataFrame) -> pd.Series:
+    """``meets`` without the :data:`POINTWISE` constraints: what more demand can only help.
+
+    The minimum specification's "every more demanding level meets too" and the
+    adaptive strategy's bisection rest on this; battery life is asked of the
+    chosen level alone (:mod:`.minspec`).
+    """
+    pointwise = [f"meets_{rule}" for rule in POINTWISE if f"meets_{rule}" in judged]
+    if not pointwise:
+        return judged["meets"]
+    rules = [c for c in judged.columns if c.startswith("meets_") and c not in pointwise]
+    return judged[rules].all(axis=1)

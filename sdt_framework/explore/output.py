@@ -2,13 +2,15 @@
 
 explore.parquet        one row per point x machine x scenario x classifier x repetition,
                        every swept parameter a column (reference/base rows included)
-points.csv             every evaluated point: name, design index, values, cost
+points.csv             every evaluated point: name, design index, values, cost, battery life
+                       (the target's battery and report interval; NaN and why in life_note
+                       where the sensor has no supply current on record)
 skipped_points.csv     design points not evaluated (invalid, not finite, too fast), with reason
 main_effects.csv       mean Macro-F1 per parameter level and cell, with 95 % CIs
 sensitivity.csv        ANOVA shares (grid) or SALib indices (morris/sobol/lhs), ranked
 min_spec.csv           least demanding level of each parameter meeting the target
 min_spec_points.csv    every evaluated point meeting the target
-pareto.csv             cost, mean Macro-F1 and battery life (2xAA) of every point, whether it
+pareto.csv             cost, mean Macro-F1 and battery life of every point, whether it
                        is on the cost/Macro-F1 front and on the front with battery life
                        (and its zone agreement, when the target asks for it)
 (each analysis table has a ``fidelity`` column: "full" or "screen")
@@ -29,8 +31,7 @@ import tomli_w
 from ..bench.config_paths import relative_to
 from ..bench.folder import EXPLORE_FILES
 from ..bench.results import write_frame
-from ..edge.life_objective import non_dominated, point_lives  # battery-life objective (issue 34)
-from ..edge.node import NodeSettings
+from ..edge.life_objective import non_dominated
 from ..io import atomic_write_text
 from .effects import CELL, main_effects, point_means, with_best
 from .minspec import meeting_points, min_spec
@@ -51,13 +52,6 @@ def _base_cost(explore: ExplorePlan) -> float:
     return float(getattr(price, "value", price) or 0.0)
 
 
-def _lives(explore: ExplorePlan) -> list[float]:
-    """Battery life (years, 2xAA, one report per 10 min) of each point (edge.life_objective)."""
-    settings = NodeSettings(window_s=explore.plan.config.window_s)
-    specs = [p.spec for p in explore.points]
-    return list(point_lives(specs, explore.plan.feature_set, "2xAA", settings))
-
-
 def _front_with_life(pareto: pd.DataFrame) -> pd.Series:
     """Per cell, the points no other beats on cost, Macro F1 and battery life together."""
     out = pd.Series(False, index=pareto.index)
@@ -71,7 +65,7 @@ def life_front(pareto: pd.DataFrame) -> pd.DataFrame:
     """Per point, for the best classifier: cost, battery life, mean Macro F1, front membership.
 
     One row per point with a battery life, longest life first: its cost, its
-    life (2xAA, one report per 10 min), its Macro F1 averaged over the
+    life (the target's battery and report interval), its Macro F1 averaged over the
     machine x scenario cells, and in how many of those cells it is on the
     front of cost, Macro F1 and battery life together (``on_front_with_life``
     of pareto.csv). Empty when no point has a life (no supply figures).
@@ -122,13 +116,15 @@ def write_explore(
         [{"point": p.spec.name, "design_index": p.index, **p.values} for p in explore.points]
     )
     points["cost"] = point_costs(points, base_values, sweep, _base_cost(explore), demand)
-    points["battery_life_years"] = _lives(explore)  # issue 34 hook: NaN without supply figures
+    lives = explore.lives()  # NaN with the reason in life_note where no supply figure is on record
+    points = points.merge(lives, on="point", how="left")
     means = point_means(analysed[analysed["role"] == "point"], fields)
     if "zone_agreement" in analysed:  # the target's second objective (explore.zones)
         shares = analysed.groupby(["point", "machine"])["zone_agreement"].first()
         means = means.join(shares, on=["point", "machine"])
-    pareto = with_front(means.merge(points[["point", "cost", "battery_life_years"]], on="point"))
-    pareto["on_front_with_life"] = _front_with_life(pareto)  # issue 34 hook
+    per_point = points[["point", "cost", "battery_life_years", "life_note"]]
+    pareto = with_front(means.merge(per_point, on="point"))
+    pareto["on_front_with_life"] = _front_with_life(pareto)
     tables = {
         "points": points,
         "skipped_points": explore.skipped,

@@ -32,6 +32,7 @@ import numpy as np
 import pandas as pd
 
 from .effects import CELL
+from .objectives import diagnosis_meets
 
 __all__ = ["Line", "bracket", "lines", "next_groups", "screen_groups"]
 
@@ -80,7 +81,7 @@ def _group_meets(line: Line, verdicts: pd.DataFrame) -> dict[tuple, list[bool | 
     """Per cell, each group's verdict: True/False when all its points were evaluated."""
     by_cell: dict[tuple, list[bool | None]] = {}
     for cell, part in verdicts.groupby(CELL, sort=True):
-        meets = part.set_index("point")["meets"]
+        meets = diagnosis_meets(part).set_axis(part["point"])  # bisect what demand helps
         row: list[bool | None] = []
         for group in line.groups:
             if all(p in meets.index for p in group):

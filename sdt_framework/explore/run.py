@@ -26,6 +26,7 @@ from ..registry import Registry
 from ..sensor_files import load_sensor_file
 from ..specs import SensorSpec
 from .design import design_points, repeated_point, unit_column
+from .life import point_lives, with_battery_life
 from .points import Point, build_points, left_out
 from .size import design_size, sweep_estimate
 from .stage_axes import StageAxis, base_value, check_stage_axes
@@ -51,6 +52,13 @@ class ExplorePlan:
     def base_values(self) -> dict[str, float]:
         """The base's value of every swept parameter (NaN: a stage it lacks, no default)."""
         return {key: base_value(self.base, key, self.stage_axes) for key in self.sweep.axes}
+
+    def lives(self) -> pd.DataFrame:
+        """Each point's and the base's battery life on the target's cell and interval (.life)."""
+        specs = {p.spec.name: p.spec for p in self.points}
+        specs.setdefault(self.base.name, self.base)
+        window = self.plan.config.window_s
+        return point_lives(list(specs.values()), self.plan.feature_set, window, self.sweep.target)
 
 
 def resolve_base(name: str, registry: Registry) -> SensorSpec:
@@ -142,7 +150,8 @@ def explore_table(
     reference and the base carry ``role`` "reference" and "base", the base
     its own values of the swept parameters, the reference none. With the
     benchmark's ``features`` and a target asking for zone agreement, each row
-    also carries its point's ``zone_agreement`` on that machine (:mod:`.zones`).
+    also carries its point's ``zone_agreement`` on that machine (:mod:`.zones`);
+    with a target asking for battery life, its ``battery_life_years`` (:mod:`.life`).
     """
     fields = list(explore.sweep.axes)
     ref = explore.plan.reference
@@ -166,6 +175,9 @@ def explore_table(
     table = table[table["status"] == "ok"].rename(columns={"sensor": "point"})
     table["design_index"] = table["design_index"].fillna(-1).astype(int)
     table = table.reset_index(drop=True)
+    target = explore.sweep.target
+    if target.min_battery_life_years is not None:
+        table = with_battery_life(table, explore.lives(), target)
     if features is None:
         return table
-    return with_zone_agreement(table, features, explore.plan, explore.sweep.target)
+    return with_zone_agreement(table, features, explore.plan, target)

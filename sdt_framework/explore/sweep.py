@@ -28,9 +28,11 @@ import re
 from typing import Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from .designs import DESIGNS
+from .target import SweepModel as _Model
+from .target import Target
 from .ties import check_tie
 
 __all__ = [
@@ -109,23 +111,6 @@ def flatten_stage_keys(table: Any, fields: tuple[str, ...], leaf: type) -> Any:
     return out
 
 
-class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True, allow_inf_nan=False)
-
-    @model_validator(mode="before")
-    @classmethod
-    def _no_booleans(cls, data: Any) -> Any:
-        """``true``/``false`` is not a number: pydantic would read it as 1/0, so it is refused."""
-        if isinstance(data, dict):
-            for key, value in data.items():
-                values = value if isinstance(value, list | tuple) else [value]
-                if key in cls.model_fields and any(isinstance(v, bool) for v in values):
-                    raise ValueError(
-                        f"{key}: true/false is not a number (it would be read as 1/0); give numbers"
-                    )
-        return data
-
-
 class Axis(_Model):
     """One swept parameter: explicit ``levels``, or a ``range`` sampled on a scale."""
 
@@ -176,51 +161,6 @@ class CostTerm(_Model):
         description="Override which direction is more demanding ('neither': not a "
         "specification, no minimum level and no cost).",
     )
-
-
-class Target(_Model):
-    """What a specification must reach: one Macro-F1 rule, and optionally ``zone_agreement``
-    (the share of windows graded in the reference's ISO zone, :mod:`.zones`) beside it."""
-
-    macro_f1: float | None = Field(default=None, gt=0, le=1, description="Absolute Macro-F1.")
-    fraction_of_reference: float | None = Field(
-        default=None, gt=0, le=1, description="Share of the reference's Macro-F1."
-    )
-    max_loss: float | None = Field(
-        default=None, ge=0, lt=1, description="Largest Macro-F1 loss to the reference."
-    )
-    max_loss_to_base: float | None = Field(
-        default=None,
-        ge=0,
-        lt=1,
-        description="Largest Macro-F1 loss to the base sensor (how much error it tolerates).",
-    )
-
-    zone_agreement: float | None = Field(
-        default=None, gt=0, le=1, description="Also: share of windows in the reference's ISO zone."
-    )
-
-    @model_validator(mode="after")
-    def _exactly_one(self) -> Target:
-        given = [self.macro_f1, self.fraction_of_reference, self.max_loss, self.max_loss_to_base]
-        if sum(v is not None for v in given) != 1:
-            raise ValueError(
-                "give exactly one of macro_f1, fraction_of_reference, max_loss, max_loss_to_base"
-            )
-        return self
-
-    def describe(self) -> str:
-        """The target in words, for tables and the report."""
-        if self.macro_f1 is not None:
-            words = f"Macro-F1 >= {self.macro_f1:g}"
-        elif self.fraction_of_reference is not None:
-            words = f">= {self.fraction_of_reference:g} x reference Macro-F1"
-        elif self.max_loss is not None:
-            words = f"loss to reference <= {self.max_loss:g}"
-        else:
-            words = f"loss to base <= {self.max_loss_to_base:g}"
-        zones = self.zone_agreement
-        return words if zones is None else f"{words} and zone agreement >= {zones:g}"
 
 
 class Sweep(_Model):

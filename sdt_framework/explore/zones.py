@@ -18,7 +18,7 @@ import pandas as pd
 from ..bench.plan import Plan
 from ..errors import SDTError
 from ..severity import Assignment, assign_tables, window_agreement
-from .sweep import Target
+from .target import Target
 
 __all__ = ["point_zone_agreement", "with_zone_agreement", "zone_assignments"]
 

@@ -1,0 +1,57 @@
+"""Battery life of every design point: the constraint and objective beside Macro F1.
+
+``min_battery_life_years = 5`` under a sweep's ``[sweep.target]`` asks that the
+node built around a point last at least five years on its ``battery`` (2xAA by
+default) sending one report per ``report_interval`` (10 min by default). The
+life is the whole node's (:mod:`sdt_framework.edge.node`: the accelerometer
+measuring and in standby, the microcontroller's FFT of the point's window at
+its rate, the LoRaWAN uplink and receive windows, sleep), at the protocol's
+window length, computed from the point's own sensor specification. A point
+whose sensor has no measuring supply current on record has no life: NaN, with
+the reason in ``life_note``, never a figure filled in, so it cannot meet a life
+constraint. This module attaches the life to the exploration table, one value
+per point; :mod:`.objectives` decides pass or fail.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import pandas as pd
+
+from ..edge.cells import cell
+from ..edge.life_objective import point_life
+from ..edge.node import NodeSettings
+from ..specs import FeatureSetSpec, SensorSpec
+from .target import Target
+
+__all__ = ["point_lives", "with_battery_life"]
+
+
+def point_lives(
+    sensors: Sequence[SensorSpec], feature_set: FeatureSetSpec, window_s: float, target: Target
+) -> pd.DataFrame:
+    """``point``, ``battery_life_years`` (NaN when unknown) and ``life_note`` (why unknown).
+
+    One row per sensor (a design point's, or the base's), on the target's
+    battery and reporting interval, at the protocol's window ``window_s``.
+    """
+    settings = NodeSettings(interval_s=target.interval_s, window_s=window_s)
+    battery = cell(target.battery)
+    rows = []
+    for spec in sensors:
+        years, why = point_life(spec, feature_set, battery, settings)
+        rows.append({"point": spec.name, "battery_life_years": years, "life_note": why})
+    return pd.DataFrame(rows, columns=["point", "battery_life_years", "life_note"])
+
+
+def with_battery_life(table: pd.DataFrame, lives: pd.DataFrame, target: Target) -> pd.DataFrame:
+    """``table`` with each row's point's ``battery_life_years`` when ``target`` asks for it.
+
+    ``lives`` is :func:`point_lives`'s table. The reference's row stays NaN:
+    it is the instrument the points are compared with, never judged.
+    """
+    if target.min_battery_life_years is None:
+        return table
+    out = table.drop(columns="battery_life_years", errors="ignore")
+    return out.merge(lives[["point", "battery_life_years"]], on="point", how="left")
