@@ -58,8 +58,9 @@ def _print_min_spec(min_spec: Any) -> None:
     table(title, ["machine", "scenario", *columns], rows)
     if rules:
         labels = " / ".join(f"({r})" for r in rules)
+        alone = "neither alone" if len(rules) == 2 else "none alone"
         console.print(
-            f"{labels}: the constraint that sets the level alone; (together): none alone; "
+            f"{labels}: the constraint that sets the level alone; (together): {alone}; "
             f"see min_spec.csv",
             highlight=False,
             soft_wrap=True,
@@ -103,7 +104,7 @@ def _print_battery_life(pareto: Any, fields: list[str], target: Any) -> None:
         if life != life:
             text = f"unknown, fails: {row.get('life_note') or 'no supply figures on record'}"
         else:
-            text = f"{life:.2f}{'' if life >= threshold else ' fails'}"
+            text = f"{life:.3f}{'' if life >= threshold else ' fails'}"
         rows.append([*(f"{row[f]:g}" for f in fields), text])
     title = f"Battery life per point, years ({target.node()}; target >= {threshold:g})"
     table(title, [*fields, "battery life (years)"], rows)
