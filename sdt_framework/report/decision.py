@@ -4,7 +4,8 @@ What a designer weighs: the Macro F1 lost against the reference with the
 verdict's label (:mod:`sdt_framework.verdict`, the same numbers as the
 Verdict section), the part's indicative price, its supply current while
 measuring, the payload of one report, and the node's battery life on 2xAA
-cells (:mod:`.node_edge`). A figure that is not on record says so.
+cells (:mod:`.node_edge`), and its zone agreement with the reference (the
+"Severity and alarms" section's figure). A figure that is not on record says so.
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ from ..features import resolve_feature_set
 from .document import Block, Heading, Paragraph, Table
 from .load import ResultsFolder
 from .node_edge import BATTERY, life_cell, node_budgets
+from .severity import folder_agreement
 from .verdict import folder_comparison, missing_reference_note
 
 __all__ = ["decision_blocks"]
@@ -64,6 +66,27 @@ def _current(registry: Any, name: str) -> str:
     return f"{supply.measure_ua.value:g} uA"
 
 
+def _zones(folder: ResultsFolder) -> dict[str, str]:
+    """Per sensor: its share of windows in the reference's ISO zone, per machine.
+
+    The "Severity and alarms" section's figure (:func:`.severity.folder_agreement`,
+    the same as ``sdt compare``'s "same zone"): each machine's share over all its
+    channels (the only channel's, when there is one), "Motor-4 91.2 %; ...".
+    Empty when it cannot be computed (that section says why).
+    """
+    try:
+        zones = folder_agreement(folder).zones
+    except SDTError:
+        return {}
+    pooled = zones["channel"] == "all"
+    has_pooled = pooled.groupby([zones["machine"], zones["sensor"]]).transform("any")
+    keep = zones[pooled | ~has_pooled]  # one channel: no "all" row, its own row
+    out: dict[str, list[str]] = {}
+    for r in keep.sort_values(["sensor", "machine"]).itertuples():
+        out.setdefault(r.sensor, []).append(f"{r.machine} {100 * r.share_same:.1f} %")
+    return {sensor: "; ".join(parts) for sensor, parts in out.items()}
+
+
 def decision_blocks(folder: ResultsFolder, registry: Any, margin: float = 0.02) -> list[Block]:
     """Heading, how to read it and the table; a sentence when it cannot be drawn."""
     blocks: list[Block] = [Heading("Decision table", 2)]
@@ -77,6 +100,7 @@ def decision_blocks(folder: ResultsFolder, registry: Any, margin: float = 0.02) 
     except SDTError as exc:
         return [*blocks, Paragraph(f"Not shown: {exc}")]
     losses = _losses(folder, margin)
+    zones = _zones(folder)
     rows = tuple(
         (
             name,
@@ -85,6 +109,7 @@ def decision_blocks(folder: ResultsFolder, registry: Any, margin: float = 0.02) 
             _current(registry, name),
             f"{payload} B",
             life_cell(lives.get(name)),
+            zones.get(name, "-"),
         )
         for name in folder.sensors
         if name != folder.reference
@@ -96,9 +121,19 @@ def decision_blocks(folder: ResultsFolder, registry: Any, margin: float = 0.02) 
             f"Verdict); indicative unit price with its source and date where one is public; "
             f"supply current while measuring (datasheet); application payload of one report "
             f"(3 axes); battery life of the node on {BATTERY}, one report every 10 minutes "
-            f"(Edge budget, node energy)."
+            f"(Edge budget, node energy); share of windows graded in the reference's ISO "
+            f"zone per machine, over all channels (Severity and alarms; '-' where it "
+            f"cannot be computed)."
         )
     )
-    header = ("sensor", "Δ Macro F1, verdict", "price", "supply current", "payload", "life")
+    header = (
+        "sensor",
+        "Δ Macro F1, verdict",
+        "price",
+        "supply current",
+        "payload",
+        "life",
+        "zone agreement",
+    )
     blocks.append(Table(header, rows))
     return blocks

@@ -50,6 +50,8 @@ class ResultsFolder:
     per_recording_problem: str | None = None
     #: the verdict's comparison per margin, computed once for every section that shows it
     comparisons: dict[float, Any] = field(default_factory=dict, repr=False)
+    #: the severity package's zone agreement (or the SDTError saying why none), computed once
+    agreement: Any = field(default=None, repr=False)
 
     @property
     def ok(self) -> pd.DataFrame:

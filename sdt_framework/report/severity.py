@@ -19,7 +19,7 @@ from .document import Block, Heading, Paragraph, Table
 from .figures_severity import spectral_blocks
 from .load import ResultsFolder
 
-__all__ = ["agreement_rows", "severity_blocks"]
+__all__ = ["agreement_rows", "folder_agreement", "severity_blocks"]
 
 
 def _pct(value: float) -> str:
@@ -148,23 +148,44 @@ def _alarms(agreement: Agreement) -> Table:
     return Table(header, rows, note)
 
 
+def folder_agreement(folder: ResultsFolder) -> Agreement:
+    """The folder's zone and alarm agreement with the reference, computed once.
+
+    The "Severity and alarms" section and the decision table both show it;
+    its recording bootstrap is the costly part, so the result (or the
+    :class:`SDTError` saying why there is none) is kept on the folder.
+    """
+    if folder.agreement is None:
+        try:
+            folder.agreement = _agreement(folder)
+        except SDTError as exc:
+            folder.agreement = exc
+    if isinstance(folder.agreement, SDTError):
+        raise folder.agreement
+    return folder.agreement
+
+
+def _agreement(folder: ResultsFolder) -> Agreement:
+    features = folder.features
+    if features is None or features.empty or "V_RMS" not in features.columns:
+        raise SDTError("features.parquet with V_RMS is missing.")
+    config = folder.config
+    assignments = assign_tables(
+        sorted(features["machine"].unique()),
+        configured=config.zones if config is not None else None,
+        where=f"{folder.path / 'config.toml'}: [benchmark] zones",
+    )
+    seed = config.seed if config is not None else 0
+    return zone_agreement(features, folder.reference, assignments, seed=seed)
+
+
 def severity_blocks(
     folder: ResultsFolder, registry: Any, figures_dir: Path, colors: dict[str, str]
 ) -> list[Block]:
     """The whole section; a note instead of the tables when features.parquet is absent."""
     blocks: list[Block] = [Heading("Severity and alarms", 2)]
-    features = folder.features
-    if features is None or features.empty or "V_RMS" not in features.columns:
-        return [*blocks, Paragraph("Not shown: features.parquet with V_RMS is missing.")]
-    seed = folder.config.seed if folder.config is not None else 0
     try:
-        config = folder.config
-        assignments = assign_tables(
-            sorted(features["machine"].unique()),
-            configured=config.zones if config is not None else None,
-            where=f"{folder.path / 'config.toml'}: [benchmark] zones",
-        )
-        agreement = zone_agreement(features, folder.reference, assignments, seed=seed)
+        agreement = folder_agreement(folder)
     except SDTError as exc:
         return [*blocks, Paragraph(f"Not shown: {exc}")]
     blocks += [

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import pandas as pd
+
 from sdt_framework.edge.cells import cell
 from sdt_framework.edge.node import NodeSettings, node_budget
 from sdt_framework.report.build import build_blocks
 from sdt_framework.report.document import Heading, Paragraph, Table
 from sdt_framework.report.load import load_results
+from sdt_framework.severity import assign_tables
 
 
 def test_decision_table_opens_the_report_with_one_row_per_candidate(results_dir, registry):
@@ -19,7 +22,7 @@ def test_decision_table_opens_the_report_with_one_row_per_candidate(results_dir,
     )
     table = next(b for b in blocks[at:] if isinstance(b, Table))
     assert [row[0] for row in table.rows] == ["adxl345"]  # every sensor but the reference
-    _, loss, price, current, payload, life = table.rows[0]
+    _, loss, price, current, payload, life, _zones = table.rows[0]
     assert "**" in loss  # the verdict label
     assert price.startswith("3.92 EUR (part adxl345-ds)")  # the catalogue part's price
     assert current == "140 uA"  # Table 7, 3200 Hz
@@ -48,3 +51,37 @@ def test_edge_budget_holds_a_node_table_per_sensor_or_says_why_not(results_dir, 
     assert isinstance(after, Paragraph) and "no measuring supply current" in after.text
     tables = [b for b in blocks[at:] if isinstance(b, Table) and b.header[0] == "consumer"]
     assert len(tables) == 1 and tables[0].rows[-1][0] == "total per report"
+
+
+def _table_after(blocks, heading: str) -> Table:
+    at = blocks.index(next(b for b in blocks if isinstance(b, Heading) and b.text == heading))
+    return next(b for b in blocks[at:] if isinstance(b, Table))
+
+
+def test_decision_zone_agreement_is_the_severity_sections_figure(results_dir, registry):
+    """The column equals the "Zone agreement" table's all-channel share, and a count by hand.
+
+    The hand count pairs every adxl345 window of features.parquet with the
+    reference's same window and compares zones from the zone table's cuts.
+    """
+    folder = load_results(results_dir)
+    blocks = build_blocks(folder, registry, results_dir / "figures")
+    header = _table_after(blocks, "Decision table").header
+    decision = {
+        r[0]: r[header.index("zone agreement")] for r in _table_after(blocks, "Decision table").rows
+    }
+    severity = _table_after(blocks, "Zone agreement")
+    pooled = [r for r in severity.rows if r[1] == "all"]  # machine, channel, sensor, table, same
+    assert [r[2] for r in pooled] == ["adxl345"]
+    assert decision == {"adxl345": f"Motor-2 {pooled[0][4]}"}
+    cuts = assign_tables(["Motor-2"])["Motor-2"].table.cuts
+    features = pd.read_parquet(results_dir / "features.parquet")
+    if "repeat" in features:
+        features = features[features["repeat"] == 0]
+    key = ["channel", "recording_id", "acquisition", "window"]
+    ref = features[features["sensor"] == folder.reference].set_index(key)["V_RMS"]
+    mine = features[features["sensor"] == "adxl345"].set_index(key)["V_RMS"]
+    both = pd.concat([ref.rename("ref"), mine.rename("mine")], axis=1, join="inner")
+    zone_ref = sum((both["ref"] > c).astype(int) for c in cuts)
+    zone_mine = sum((both["mine"] > c).astype(int) for c in cuts)
+    assert decision["adxl345"] == f"Motor-2 {100 * (zone_ref == zone_mine).mean():.1f} %"
