@@ -117,6 +117,7 @@ def part_json(part: PartSpec) -> dict[str, Any]:
         "noise_density_ug_rthz": default.sensor.noise_density_ug_rthz,
         "per_axis": default.sensor.per_axis,
         "price": part.price.model_dump() if part.price else None,
+        "no_price": part.no_price.model_dump() if part.no_price else None,
         "documents": {k: d.model_dump() for k, d in part.documents.items()},
         "notes": list(part.notes),
         "plugin": part.plugin,

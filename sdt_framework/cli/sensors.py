@@ -240,6 +240,12 @@ def _print_part(resolved) -> None:
             f"Indicative price: {p.amount:g} {p.currency} ({p.quantity}; {p.source}, {p.date})"
             + (f"; {p.note}" if p.note else "")
         )
+    elif part.no_price:
+        n = part.no_price
+        _say(
+            f"Indicative price: no public price found ({len(n.searched)} searches on {n.date}, "
+            f"listed in the part file's [no_price])."
+        )
     else:
         _say("Indicative price: not found.")
     _say("Sources:")

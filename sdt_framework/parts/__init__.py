@@ -11,7 +11,7 @@ from __future__ import annotations
 from .error_modes import ERROR_KEYS, ErrorTermsError, TermSource
 from .error_terms import TERMS, ErrorTerm
 from .files import load_part_file, load_part_text
-from .model import CHAIN_VALUES, AxisValues, Document, Entry, Mode, PartSpec, Price
+from .model import CHAIN_VALUES, AxisValues, Document, Entry, Mode, NoPrice, PartSpec, Price
 from .names import canonical_name, split_name, split_names
 from .resolve import FieldSource, ModeError, Resolved, all_modes, resolve, select_mode
 
@@ -27,6 +27,7 @@ __all__ = [
     "FieldSource",
     "Mode",
     "ModeError",
+    "NoPrice",
     "PartSpec",
     "Price",
     "Resolved",

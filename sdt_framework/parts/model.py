@@ -28,7 +28,7 @@ from pydantic import Field, field_validator, model_validator
 from ..specs import Spec
 from .error_terms import ErrorTerm, check_terms
 from .supply import PartSupply
-from .values import AxisValues, Basis, Document, Entry, Model, Price
+from .values import AxisValues, Basis, Document, Entry, Model, NoPrice, Price
 
 __all__ = [
     "CHAIN_VALUES",
@@ -36,6 +36,7 @@ __all__ = [
     "Document",
     "Entry",
     "Mode",
+    "NoPrice",
     "PartSpec",
     "Price",
 ]
@@ -139,6 +140,9 @@ class PartSpec(Spec):
     values: dict[str, Entry] = Field(default_factory=dict, description="Values of every mode.")
     modes: dict[str, Mode] = Field(default_factory=dict)
     price: Price | None = None
+    no_price: NoPrice | None = Field(
+        default=None, description="No public price found: what was searched, when ([no_price])."
+    )
     notes: tuple[str, ...] = Field(default=(), description="Caveats a user should know.")
     errors: dict[str, ErrorTerm] = Field(
         default_factory=dict,
@@ -153,6 +157,8 @@ class PartSpec(Spec):
 
     @model_validator(mode="after")
     def _check_structure(self) -> PartSpec:
+        if self.price is not None and self.no_price is not None:
+            raise ValueError("give [price] or [no_price] (none found), not both")
         for key in self.modes:
             if not _KEY.match(key):
                 raise ValueError(f"mode key {key!r}: use lower-case letters, digits and '_'")

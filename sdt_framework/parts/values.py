@@ -12,7 +12,7 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
-__all__ = ["AxisValues", "Basis", "Document", "Entry", "Model", "Price"]
+__all__ = ["AxisValues", "Basis", "Document", "Entry", "Model", "NoPrice", "Price"]
 
 Basis = Literal["typical", "minimum", "maximum", "nominal", "setting", "derived"]
 
@@ -44,6 +44,21 @@ class Price(Model):
     source: str = Field(min_length=1, description="Vendor page the price was read from.")
     date: str = Field(min_length=1, description="When the price was read (as known).")
     note: str = Field(default="", description="Variant ordered, caveats.")
+
+
+class NoPrice(Model):
+    """The record that no public unit price was found: every search made, and when.
+
+    A part file says so in ``[no_price]`` instead of leaving ``[price]`` out,
+    so a missing price reads as searched-for, never as forgotten; nothing is
+    filled in.
+    """
+
+    searched: tuple[str, ...] = Field(
+        min_length=1, description="Each search made: where (site, corpus) and what was asked."
+    )
+    date: str = Field(min_length=1, description="When the searches were made.")
+    note: str = Field(default="", description="Near misses (other variants, sibling parts).")
 
 
 class AxisValues(Model):

@@ -50,7 +50,8 @@ def _price(registry: Any, name: str) -> str:
         except SDTError:
             continue
         if part.price is None:
-            return "no public price"
+            searched = part.no_price
+            return "no public price" + ("" if searched is None else f" (searched {searched.date})")
         p = part.price
         return f"{p.amount:g} {p.currency}{label}; {p.source}, {p.date}"
     return "no public price"

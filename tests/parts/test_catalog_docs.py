@@ -40,5 +40,5 @@ def test_the_documented_table_matches_the_catalogue():
             span(data["full_scale_g"]),
         ), name
         assert price == (
-            f"{part.price.amount:g} {part.price.currency}" if part.price else "not found"
+            f"{part.price.amount:g} {part.price.currency}" if part.price else "no public price"
         )
