@@ -248,16 +248,10 @@ def build_registry(
 ) -> Registry:
     """Build a registry from installed entry points, extra plugins and sensor files.
 
-    Parameters
-    ----------
-    entry_points
-        Scan the ``sdt_framework`` entry-point group (False for isolated tests).
-    plugins
-        Extra plugin objects or modules registered in-process.
-    sensor_files
-        TOML sensor files, added after those named by ``SDT_SENSOR_PATH``.
-    environ
-        Environment for the ``SDT_*`` switches (default ``os.environ``).
+    ``entry_points``: scan the ``sdt_framework`` entry-point group (False for isolated
+    tests); ``plugins``: objects or modules registered in-process; ``sensor_files``: TOML
+    sensor files, added after those named by ``SDT_SENSOR_PATH``; ``environ``: the
+    ``SDT_*`` switches (default ``os.environ``).
     """
     environ = os.environ if environ is None else environ
     registry = Registry(trace=bool(environ.get(ENV_TRACE)))
