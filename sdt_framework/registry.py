@@ -1,10 +1,9 @@
 """The typed registry facade: the one object the rest of sdt-framework asks.
 
-``build_registry()`` loads entry-point plugins, in-process plugins and TOML
-sensor files; the orchestrator only calls ``registry.sensor(name)``,
-``registry.classifiers()`` and the like and never touches ``pm.hook``. The
-``register`` callback handed to every hook is the single place that validates
-a spec, stamps its provenance and rejects duplicates.
+``build_registry()`` loads entry-point plugins, in-process plugins and TOML sensor
+files; the orchestrator only calls ``registry.sensor(name)``, ``registry.classifiers()``
+and the like, never ``pm.hook``. The ``register`` callback handed to every hook is the
+single place that validates a spec, stamps its provenance and rejects duplicates.
 
 :func:`default_registry` is the one process-wide registry that registered
 names (``degrade(x, fs, "adxl345")``) are resolved in; importing this module
