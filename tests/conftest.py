@@ -61,7 +61,8 @@ def _one_blas_thread() -> None:
     OpenBLAS would start a thread per core as well, and on small matrices those
     threads spin against the other worker's: SALib's delta analysis (a Gaussian KDE
     per bootstrap sample) took 14.6 s with two threads on the loaded 2-core machine
-    and 1.4 s with one. Only the BLAS pool is limited (results can differ from a multi-thread run in rounding only).
+    and 1.4 s with one. Only the BLAS pool is limited (a result can differ from a
+    multi-thread run's in rounding only).
     """
     from threadpoolctl import threadpool_limits
 
