@@ -1,10 +1,9 @@
 """The typed registry facade: the one object the rest of sdt-framework asks.
 
-``build_registry()`` loads entry-point plugins, in-process plugins and TOML
-sensor files; the orchestrator only calls ``registry.sensor(name)``,
-``registry.classifiers()`` and the like and never touches ``pm.hook``. The
-``register`` callback handed to every hook is the single place that validates
-a spec, stamps its provenance and rejects duplicates.
+``build_registry()`` loads entry-point plugins, in-process plugins and TOML sensor
+files; the orchestrator only calls ``registry.sensor(name)``, ``registry.classifiers()``
+and the like, never ``pm.hook``. The ``register`` callback handed to every hook is the
+single place that validates a spec, stamps its provenance and rejects duplicates.
 
 :func:`default_registry` is the one process-wide registry that registered
 names (``degrade(x, fs, "adxl345")``) are resolved in; importing this module
@@ -248,16 +247,10 @@ def build_registry(
 ) -> Registry:
     """Build a registry from installed entry points, extra plugins and sensor files.
 
-    Parameters
-    ----------
-    entry_points
-        Scan the ``sdt_framework`` entry-point group (False for isolated tests).
-    plugins
-        Extra plugin objects or modules registered in-process.
-    sensor_files
-        TOML sensor files, added after those named by ``SDT_SENSOR_PATH``.
-    environ
-        Environment for the ``SDT_*`` switches (default ``os.environ``).
+    ``entry_points``: scan the ``sdt_framework`` entry-point group (False for isolated
+    tests); ``plugins``: objects or modules registered in-process; ``sensor_files``: TOML
+    sensor files, added after those named by ``SDT_SENSOR_PATH``; ``environ``: the
+    ``SDT_*`` switches (default ``os.environ``).
     """
     environ = os.environ if environ is None else environ
     registry = Registry(trace=bool(environ.get(ENV_TRACE)))

@@ -48,9 +48,27 @@ def pytest_configure(config: pytest.Config) -> None:
     assert "sdt_framework.cli.common" not in sys.modules, "conftest must not import the CLI"
     os.environ.pop("COLUMNS", None)
     os.environ.pop("LINES", None)
+    _one_blas_thread()
     config.addinivalue_line(
         "markers", "catalog: needs the separately installed sensor catalogue (sdt_sensors_catalog)"
     )
+
+
+def _one_blas_thread() -> None:
+    """One BLAS thread in this process and in the commands it starts, unless the user set one.
+
+    The suite runs one pytest-xdist worker per core (``make test``); each worker's
+    OpenBLAS would start a thread per core as well, and on small matrices those
+    threads spin against the other worker's: SALib's delta analysis (a Gaussian KDE
+    per bootstrap sample) took 14.6 s with two threads on the loaded 2-core machine
+    and 1.4 s with one. Only the BLAS pool is limited (a result can differ from a
+    multi-thread run's in rounding only).
+    """
+    from threadpoolctl import threadpool_limits
+
+    for name in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+        os.environ.setdefault(name, "1")
+    threadpool_limits(limits=int(os.environ["OPENBLAS_NUM_THREADS"]), user_api="blas")
 
 
 def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:

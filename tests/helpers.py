@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["EXPLORE_BENCHMARK", "MANIFEST_HEADER", "run_sdt", "six_recordings"]
+__all__ = ["EXPLORE_BENCHMARK", "MANIFEST_HEADER", "run_sdt", "six_recordings", "small_protocol"]
 
 MANIFEST_HEADER = "path,sampling_rate_hz,machine,condition,severity,recording_id,channel\n"
 
@@ -32,6 +32,24 @@ channels = ["ch1"]
 scenarios = ["interpolation"]
 repeats = 1
 """
+
+
+def small_protocol(channels: int = 1, repeats: int = 1, scenarios: int = 1) -> dict:
+    """A benchmark protocol of seconds: Motor-2, 1.5 s acquisitions, lr, one process.
+
+    ``channels``: ch1 (1) or ch1 and ch4 (2); ``scenarios``: forward (1) or forward and
+    interpolation (2); ``repeats``: repetitions. The explore and edge tests share it.
+    """
+    return {
+        "dataset_options": {"duration": 1.5},
+        "machines": ["Motor-2"],
+        "channels": ["ch1", "ch4"][:channels],
+        "classifiers": ["lr"],
+        "scenarios": ["forward", "interpolation"][:scenarios],
+        "repeats": repeats,
+        "jobs": 1,
+        "report": False,
+    }
 
 
 def _cap_address_space(limit: int) -> None:

@@ -12,7 +12,6 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from ..chain.simulable import simulation_problem
 from ..errors import SDTError
 from ..parts import PartSpec, all_modes, resolve
 from ..specs import SensorSpec
@@ -151,7 +150,13 @@ def _sensor_ok(sensor: SensorSpec, filters: Filters) -> bool:
         return False
     if filters.max_noise is not None and sensor.noise_density_ug_rthz > filters.max_noise:
         return False
-    return filters.simulable_at is None or simulation_problem(sensor, filters.simulable_at) is None
+    if filters.simulable_at is None:
+        return True
+    # here, not at the top: the chain package loads scipy.signal (about 1 s), which only
+    # --simulable-at needs; every other sdt command's start-up would pay for it
+    from ..chain.simulable import simulation_problem
+
+    return simulation_problem(sensor, filters.simulable_at) is None
 
 
 def profile_matches(spec: SensorSpec, filters: Filters) -> bool:

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from typing import Any, Protocol
 
 import numpy as np
+from threadpoolctl import threadpool_limits
 
 from ..errors import SDTError
 
@@ -107,10 +108,12 @@ def _quiet(analyse: Callable[[], Mapping[str, Any]]) -> dict:
     beats a caller's ``"ignore"``) and replaces ``warnings.formatwarning`` for
     the whole process; so the warnings are recorded rather than filtered, and
     the formatter is put back. numpy's warnings on degenerate effects (all
-    equal) are recorded the same way.
+    equal) are recorded the same way. One BLAS thread: delta evaluates a Gaussian
+    KDE per bootstrap sample, thousands of tiny solves that a thread per core only
+    slows (benchmarks/bench_sensitivity.py: same indices, 38 s -> 0.6 s on a loaded 2-core machine).
     """
     formatter = warnings.formatwarning
-    with warnings.catch_warnings(record=True) as caught:
+    with warnings.catch_warnings(record=True) as caught, threadpool_limits(1, user_api="blas"):
         warnings.simplefilter("always")
         try:
             res = dict(analyse())

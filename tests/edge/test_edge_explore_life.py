@@ -16,17 +16,9 @@ from sdt_framework.explore.output import write_explore
 from sdt_framework.explore.run import explore_table, plan_explore
 from sdt_framework.explore.sweep_file import parse_sweep
 
-#: Motor-2 only, 1.5 s acquisitions, one channel, lr, one repetition: seconds
-PROTOCOL = {
-    "dataset_options": {"duration": 1.5},
-    "machines": ["Motor-2"],
-    "channels": ["ch1"],
-    "classifiers": ["lr"],
-    "scenarios": ["forward"],
-    "repeats": 1,
-    "jobs": 1,
-    "report": False,
-}
+from ..helpers import small_protocol
+
+PROTOCOL = small_protocol()
 SWEEP = {
     "base": "adxl345",
     "axes": {"noise_density_ug_rthz": {"levels": [90, 290]}},

@@ -25,16 +25,9 @@ from sdt_framework.explore.output import write_explore
 from sdt_framework.explore.run import explore_table, plan_explore
 from sdt_framework.explore.sweep_file import parse_sweep
 
-PROTOCOL = {
-    "dataset_options": {"duration": 1.5},
-    "machines": ["Motor-2"],
-    "channels": ["ch1", "ch4"],
-    "classifiers": ["lr"],
-    "scenarios": ["forward", "interpolation"],
-    "repeats": 2,
-    "jobs": 1,
-    "report": False,
-}
+from ..helpers import small_protocol
+
+PROTOCOL = small_protocol(channels=2, repeats=2, scenarios=2)
 SWEEP = {
     "base": "adxl345",
     "axes": {

@@ -22,17 +22,9 @@ from sdt_framework.explore.sweep import Target
 from sdt_framework.specs import SensorSpec
 from sdt_framework.stages import StageContext
 
-#: one machine, one channel, one scenario, lr, one repetition, 1.5 s acquisitions
-TINY = {
-    "dataset_options": {"duration": 1.5},
-    "machines": ["Motor-2"],
-    "channels": ["ch1"],
-    "classifiers": ["lr"],
-    "scenarios": ["forward"],
-    "repeats": 1,
-    "jobs": 1,
-    "report": False,
-}
+from ..helpers import small_protocol
+
+TINY = small_protocol()
 NONLINEARITY = {"base": "adxl345", "axes": {"nonlinearity.second_pct_fs": {"levels": [0, 2.5]}}}
 
 
