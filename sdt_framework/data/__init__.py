@@ -15,12 +15,37 @@ write_nln_emp
 
 from __future__ import annotations
 
-from .cache import ArrayCache, default_cache_dir
-from .manifest import open_manifest
-from .nln_emp import PAPER_SUBSETS, open_nln_emp, parse_condition
-from .open import open_dataset, write_nln_emp
-from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
-from .synth_dataset import SyntheticPump, open_synthetic
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .cache import ArrayCache, default_cache_dir
+    from .manifest import open_manifest
+    from .nln_emp import PAPER_SUBSETS, open_nln_emp, parse_condition
+    from .open import open_dataset, write_nln_emp
+    from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
+    from .synth_dataset import SyntheticPump, open_synthetic
+
+#: public name -> the submodule that defines it. Loaded on first use (PEP 562), as
+#: scipy loads its subpackages: a signal reader that imports ``data.csv_signal`` does
+#: not load the generator, and with it scipy.signal (about 1 s at every ``sdt`` start)
+_WHERE = {
+    "ArrayCache": "cache",
+    "default_cache_dir": "cache",
+    "open_manifest": "manifest",
+    "PAPER_SUBSETS": "nln_emp",
+    "open_nln_emp": "nln_emp",
+    "parse_condition": "nln_emp",
+    "open_dataset": "open",
+    "write_nln_emp": "open",
+    "DataFileError": "recording",
+    "Dataset": "recording",
+    "Recording": "recording",
+    "Skipped": "recording",
+    "measurement_groups": "recording",
+    "SyntheticPump": "synth_dataset",
+    "open_synthetic": "synth_dataset",
+}
 
 __all__ = [
     "PAPER_SUBSETS",
@@ -39,3 +64,13 @@ __all__ = [
     "parse_condition",
     "write_nln_emp",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _WHERE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    return getattr(importlib.import_module(f".{_WHERE[name]}", __name__), name)
+
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *_WHERE})
