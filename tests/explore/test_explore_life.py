@@ -9,8 +9,6 @@ those lives, so which points meet is known by hand.
 from __future__ import annotations
 
 import math
-import subprocess
-import sys
 
 import numpy as np
 import pandas as pd
@@ -23,6 +21,8 @@ from sdt_framework.explore.life import point_lives
 from sdt_framework.explore.minspec import meeting_points
 from sdt_framework.explore.objectives import verdicts
 from sdt_framework.explore.target import Target
+
+from ..helpers import run_sdt
 
 RATES = [800.0, 1600.0, 3200.0, 6400.0]
 FIELDS = ["sampling_rate_hz"]
@@ -169,12 +169,7 @@ machines = ["Motor-2"]
 def test_a_bad_life_value_is_one_line_naming_file_and_field(tmp_path, line, field) -> None:
     path = tmp_path / "sweep.toml"
     path.write_text(SWEEP.format(line=line))
-    result = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", "explore", str(path), "--out", str(tmp_path / "o")],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    result = run_sdt("explore", str(path), "--out", str(tmp_path / "o"))
     assert result.returncode == 2, result.stderr
     lines = [x for x in result.stderr.splitlines() if x.strip()]
     assert len(lines) == 1 and lines[0].startswith("error: "), result.stderr

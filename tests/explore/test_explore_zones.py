@@ -7,8 +7,6 @@ zone table's boundaries with plain comparisons, not by the code under test.
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +21,8 @@ from sdt_framework.explore.objectives import verdicts
 from sdt_framework.explore.sweep import Target
 from sdt_framework.explore.zones import point_zone_agreement
 from sdt_framework.severity import assign_tables, builtin_tables
+
+from ..helpers import run_sdt
 
 CUTS = (1.4, 2.8, 4.5)  # ISO 10816-3 group 2 rigid, the default table of Motor-4
 #: reference V_RMS (mm/s) per window; x 1.5 moves the six between 0.94 and 4.5 one zone up
@@ -154,12 +154,7 @@ report = false
 
 def _refused(sweep: Path, out: Path) -> list[str]:
     """``sdt explore`` on a bad sweep: exit 2, one ``error:`` line (returned), no traceback."""
-    result = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", "explore", str(sweep), "--out", str(out)],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    result = run_sdt("explore", str(sweep), "--out", str(out))
     assert result.returncode == 2, result.stderr
     lines = [line for line in result.stderr.splitlines() if line.strip()]
     assert len(lines) == 1 and lines[0].startswith("error: "), result.stderr
