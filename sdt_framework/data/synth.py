@@ -280,10 +280,12 @@ def generate_run(
             noise = rng(seed, machine, run, "noise", acq, ch).normal(0, m.SENSOR_NOISE_G, n)
             path = m.channel_path(ch)
             rms, kurt, crest = mix.target(machine, run, ch)
+            spread = rng(seed, machine, run, "column spread", acq, ch)
+            goal = mix.column_goal(ch, (rms * drift[ch][acq], kurt, crest), spread)
             mode = _resonator(*path.modes[0][:2], fs)[:2]
             out[ch][acq] = mix.mix_column(
                 _channel(src, path, noise, fs, install[ch]),
-                (rms * drift[ch][acq], kurt, crest),
+                goal,
                 mode,
                 (*src["tone"], rng(seed, machine, run, "tone", ch).uniform(0, 2 * np.pi)),
                 rng(seed, machine, run, "knocks", acq, ch),

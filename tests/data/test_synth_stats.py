@@ -162,22 +162,9 @@ def healthy_columns() -> dict[tuple[str, str], np.ndarray]:
     return {key: np.array(values) for key, values in columns.items()}
 
 
-#: ch1's crest-factor SD: the generator mixes every column to its run's crest factor, so
-#: within a run ch1 (no knocks, Gaussian-like peaks) spreads by about 0.2 where the real
-#: columns spread by about 0.5; synthetic 0.34 against 0.56 (issue 30, left open)
-CH1_CREST_SD = pytest.mark.xfail(strict=True, reason="ch1 crest SD 0.34, real 0.56: see issue 30")
-
-
 @pytest.mark.parametrize(
     ("name", "ch", "moment"),
-    [
-        pytest.param(
-            n, c, k, marks=CH1_CREST_SD if (n, c, k) == ("crest_factor", "ch1", "sd") else ()
-        )
-        for n in ("rms_g", "crest_factor")
-        for c in CHANNELS
-        for k in ("mean", "sd")
-    ],
+    [(n, c, k) for n in ("rms_g", "crest_factor") for c in CHANNELS for k in ("mean", "sd")],
 )
 def test_healthy_motor4_columns_spread_as_the_real_ones(
     healthy_columns, name: str, ch: str, moment: str
