@@ -88,3 +88,15 @@ def test_a_slow_block_keeps_the_slow_time_limit_when_every_block_runs(tmp_path, 
             "echo quick": runner.FAST_TIMEOUT_S if mode == "all" else runner.SLOW_TIMEOUT_S,
             "echo long": runner.SLOW_TIMEOUT_S,
         }
+
+
+def test_repaste_moves_figures_and_keeps_the_documents_choice_of_lines():
+    """Shown lines take the printed figures in order; an elision stays, a line left out
+    of the document stays out, and a shown line whose words moved is listed, untouched."""
+    from tools.doccheck.repaste import repaste
+
+    shown = ("900 runs in 83 s", "...", "│ adxl345 │ 0.3663 │", "verdict: worse")
+    printed = ["900 runs in 110 s", "Motor-2 table", "│ adxl345 │ 0.4100 │", "verdict: better"]
+    new, unmatched = repaste(shown, printed)
+    assert new == ["900 runs in 110 s", "...", "│ adxl345 │ 0.4100 │", "verdict: worse"]
+    assert unmatched == ["verdict: worse"]

@@ -1,0 +1,76 @@
+"""``python -m tools.doccheck.repaste DUMP [DOC ...]``: paste fresh figures into shown outputs.
+
+After a change that moves figures (a generator tweak re-runs every documented
+benchmark), ``python -m tools.doccheck --mode all --dump DUMP`` keeps what each
+command printed. This pastes those prints back: each line a document shows
+under a command is replaced by the next printed line that reads the same with
+numbers masked (``compare.normalise``), so the document keeps its own choice of
+lines (elisions, a table left out) and only its figures move. A shown line
+with no such printed line is left as it is and listed: its words moved, and a
+person rewrites it (and the prose around it, whose numbers this never touches).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from .compare import ELISION, PROGRESS, normalise
+from .extract import ROOT, Command, all_steps
+
+
+def dumped(folder: Path, command: Command) -> list[str] | None:
+    """What ``command`` printed in the dump (``__main__.dump``'s file), or None if not run."""
+    path = folder / (command.id.replace("/", "_").replace(":", "_") + ".txt")
+    if not path.is_file():
+        return None
+    lines = path.read_text(encoding="utf-8").split("\n")
+    return [line.rstrip() for line in lines[1:]]  # the first line repeats the command
+
+
+def repaste(shown: tuple[str, ...], printed: list[str]) -> tuple[list[str], list[str]]:
+    """(the shown lines with printed figures, the shown lines no printed line matches)."""
+    out, unmatched, cursor = list(shown), [], 0
+    for index, line in enumerate(shown):
+        if line.strip() in ELISION or PROGRESS.search(line) or not normalise(line):
+            continue
+        want = normalise(line)
+        match = next(
+            (j for j in range(cursor, len(printed)) if normalise(printed[j]) == want), None
+        )
+        if match is None:
+            unmatched.append(line)
+            continue
+        out[index], cursor = printed[match], match + 1
+    return out, unmatched
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Rewrite the selected documents in place; print what could not be matched."""
+    parser = argparse.ArgumentParser(prog="python -m tools.doccheck.repaste")
+    parser.add_argument("dump", type=Path, help="the folder --dump wrote")
+    parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
+    args = parser.parse_args(argv)
+    left = 0
+    for doc, steps in all_steps().items():
+        if args.docs and doc not in args.docs:
+            continue
+        path = ROOT / doc
+        lines = path.read_text(encoding="utf-8").split("\n")
+        for step in steps:
+            printed = dumped(args.dump, step) if isinstance(step, Command) else None
+            if printed is None:
+                continue
+            new, unmatched = repaste(step.output, printed)
+            lines[step.line : step.line + len(new)] = new  # step.line is 1-based: output next
+            for line in unmatched:
+                print(f"{step.id}: not printed: {line}")
+            left += len(unmatched)
+        path.write_text("\n".join(lines), encoding="utf-8")
+    print(f"{left} shown line(s) left as they were")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
