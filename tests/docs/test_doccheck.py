@@ -92,11 +92,29 @@ def test_a_slow_block_keeps_the_slow_time_limit_when_every_block_runs(tmp_path, 
 
 def test_repaste_moves_figures_and_keeps_the_documents_choice_of_lines():
     """Shown lines take the printed figures in order; an elision stays, a line left out
-    of the document stays out, and a shown line whose words moved is listed, untouched."""
+    of the document stays out, and a shown line whose words moved is listed, untouched
+    (and then only table rows move: wrapped prose could match the wrong line)."""
     from tools.doccheck.repaste import repaste
 
     shown = ("900 runs in 83 s", "...", "│ adxl345 │ 0.3663 │", "verdict: worse")
     printed = ["900 runs in 110 s", "Motor-2 table", "│ adxl345 │ 0.4100 │", "verdict: better"]
     new, unmatched = repaste(shown, printed)
-    assert new == ["900 runs in 110 s", "...", "│ adxl345 │ 0.4100 │", "verdict: worse"]
+    assert new == ["900 runs in 83 s", "...", "│ adxl345 │ 0.4100 │", "verdict: worse"]
     assert unmatched == ["verdict: worse"]
+    # every line matched: prose takes its figures too
+    assert repaste(shown[:3], printed)[0] == ["900 runs in 110 s", "...", "│ adxl345 │ 0.4100 │"]
+
+
+def test_repaste_takes_no_line_from_another_machines_table():
+    """A name with a digit (Motor-4, ch1) is a word when pasting: the Motor-2 row that
+    the checker would accept is not pasted over a Motor-4 row."""
+    from tools.doccheck.repaste import repaste
+
+    shown = ("Macro F1, Motor-4", "│ adxl345 │ 0.3663 │")
+    printed = [
+        "Macro F1, Motor-2",
+        "│ adxl345 │ 0.2000 │",
+        "Macro F1, Motor-4",
+        "│ adxl345 │ 0.4100 │",
+    ]
+    assert repaste(shown, printed) == (["Macro F1, Motor-4", "│ adxl345 │ 0.4100 │"], [])

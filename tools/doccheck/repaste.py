@@ -4,20 +4,33 @@ After a change that moves figures (a generator tweak re-runs every documented
 benchmark), ``python -m tools.doccheck --mode all --dump DUMP`` keeps what each
 command printed. This pastes those prints back: each line a document shows
 under a command is replaced by the next printed line that reads the same with
-numbers masked (``compare.normalise``), so the document keeps its own choice of
+figures masked (:func:`key`), so the document keeps its own choice of
 lines (elisions, a table left out) and only its figures move. A shown line
 with no such printed line is left as it is and listed: its words moved, and a
 person rewrites it (and the prose around it, whose numbers this never touches).
+In a block with such a line only table rows are pasted: prose the terminal
+wrapped at other words can match the wrong printed line.
 """
 
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from pathlib import Path
 
-from .compare import ELISION, PROGRESS, normalise
+from .compare import BOXES, ELISION, PROGRESS, SPACES
 from .extract import ROOT, Command, all_steps
+
+#: a figure: a number standing alone, not part of a name (``Motor-4``, ``ch1``, ``F1``,
+#: ``x4`` stay words here, where the checker masks some of them: a pasted line must not
+#: come from another machine's table)
+FIGURE = re.compile(r"(?<![\w.-])[-+−]?\d[\d,]*(?:\.\d+)?(?:[eE][-+]?\d+)?")
+
+
+def key(line: str) -> str:
+    """A line with its figures masked and table borders and spacing collapsed."""
+    return SPACES.sub(" ", BOXES.sub(" | ", FIGURE.sub("#", line))).strip(" |")
 
 
 def dumped(folder: Path, command: Command) -> list[str] | None:
@@ -33,16 +46,16 @@ def repaste(shown: tuple[str, ...], printed: list[str]) -> tuple[list[str], list
     """(the shown lines with printed figures, the shown lines no printed line matches)."""
     out, unmatched, cursor = list(shown), [], 0
     for index, line in enumerate(shown):
-        if line.strip() in ELISION or PROGRESS.search(line) or not normalise(line):
+        if line.strip() in ELISION or PROGRESS.search(line) or not key(line):
             continue
-        want = normalise(line)
-        match = next(
-            (j for j in range(cursor, len(printed)) if normalise(printed[j]) == want), None
-        )
+        want = key(line)
+        match = next((j for j in range(cursor, len(printed)) if key(printed[j]) == want), None)
         if match is None:
             unmatched.append(line)
             continue
         out[index], cursor = printed[match], match + 1
+    if unmatched:  # prose wrapped elsewhere may have matched another line: keep table rows only
+        out = [new if BOXES.search(old) else old for old, new in zip(shown, out, strict=True)]
     return out, unmatched
 
 
