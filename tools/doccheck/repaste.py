@@ -22,10 +22,10 @@ from pathlib import Path
 from .compare import BOXES, ELISION, PROGRESS, SPACES
 from .extract import ROOT, Command, all_steps
 
-#: a figure: a number standing alone, not part of a name (``Motor-4``, ``ch1``, ``F1``,
-#: ``x4`` stay words here, where the checker masks some of them: a pasted line must not
-#: come from another machine's table)
-FIGURE = re.compile(r"(?<![\w.-])[-+−]?\d[\d,]*(?:\.\d+)?(?:[eE][-+]?\d+)?")
+#: a figure: a number standing alone or in a range (``0.22-0.34``), not part of a name
+#: (``Motor-4``, ``ch1``, ``F1``, ``x4`` stay words here, where the checker masks some of
+#: them: a pasted line must not come from another machine's table)
+FIGURE = re.compile(r"(?<![\w.])(?<![A-Za-z]-)[-+−]?\d[\d,]*(?:\.\d+)?(?:[eE][-+]?\d+)?")
 
 
 def key(line: str) -> str:
