@@ -9,7 +9,6 @@ float32. Computed on a whole batch of windows at once: moments on the
 from __future__ import annotations
 
 import numpy as np
-import scipy.fft
 
 from sdt_framework import FeatureSetSpec, hookimpl
 from sdt_framework.hookspecs import Register
@@ -45,6 +44,8 @@ def compute(windows: np.ndarray, fs: float) -> np.ndarray:
     FFT. With A_k = 2|X_k|/N, the band sums of eq. 5 are matrix-vector products
     of the power |X_k|^2 with 1/(2 pi f_k)^2 and 1/(2 pi f_k)^4.
     """
+    import scipy.fft  # on first use: plugin discovery (every sdt command) stays light
+
     x = np.asarray(windows, dtype=np.float64)
     n_windows, n = x.shape
     xc = x - x.mean(axis=1, keepdims=True)

@@ -16,7 +16,6 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 from pydantic import BaseModel, ConfigDict, Field
-from scipy.signal import lfilter
 
 from sdt_framework import hookimpl
 from sdt_framework.chain import SameRate
@@ -86,6 +85,8 @@ class Additive(SameRate):
         if self.kind == "walk":  # a = K sqrt(dt): a Wiener process sampled at fs
             return np.cumsum(self.a * z, axis=-1)
         if self.kind == "gauss-markov":  # a = sigma, b = phi = exp(-dt / tau)
+            from scipy.signal import lfilter  # on first use (plugin discovery stays light)
+
             u = self.a * np.sqrt(1.0 - self.b**2) * z
             u[:, 0] = self.a * z[:, 0]  # start in the steady state
             return lfilter([1.0], [1.0, -self.b], u, axis=-1)

@@ -19,7 +19,6 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 from numpy.typing import NDArray
-from scipy.signal import sosfilt
 
 from ..seeding import rng
 
@@ -100,6 +99,8 @@ class LowPass(SameRate):
 
     def apply(self, x: Batch, ctx: RunContext) -> Batch:
         """Filter every row along the last axis."""
+        from scipy.signal import sosfilt  # on first use: scipy.signal costs 0.5 s to import
+
         # sosfilt wants a writable buffer; the cached design stays read-only
         return sosfilt(np.array(self.sos), x, axis=-1)
 
