@@ -18,7 +18,7 @@ import sdt_framework
 
 ROOT = Path(sdt_framework.__file__).parent
 
-_BASE = {"errors", "dtypes", "seeding", "hookspecs"}
+_BASE = {"errors", "dtypes", "seeding", "hookspecs", "lazy"}
 _IO = {"errors", "inputs", "io"}
 
 #: unit -> the units it may import (besides itself)
@@ -28,6 +28,7 @@ ALLOWED: dict[str, set[str]] = {
     "seeding": set(),
     "hookspecs": set(),
     "labels": set(),
+    "lazy": set(),
     "inputs": {"errors"},
     "io": {"errors"},
     "reader_table": {"errors"},
