@@ -16,17 +16,16 @@ import time
 from collections import Counter
 from pathlib import Path
 
-from .extract import ROOT, all_steps
+from .extract import ROOT, Command, all_steps
 from .runner import run_doc
 
 LABEL = {"passed": "PASS", "failed": "FAIL", "skipped": "SKIP", "xfailed": "XFAIL"}
 
 
-def dump(folder: Path, where: str, command: str, printed: str) -> None:
+def dump(folder: Path, command: Command, printed: str) -> None:
     """Save what a command printed, as a document would show it, to paste when it moved."""
     folder.mkdir(parents=True, exist_ok=True)
-    name = where.replace("/", "_").replace(":", "_") + ".txt"
-    (folder / name).write_text(f"$ {command}\n{printed}", encoding="utf-8")
+    (folder / command.dump_name).write_text(f"$ {command.text}\n{printed}", encoding="utf-8")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -52,7 +51,7 @@ def check(args: argparse.Namespace, cache: Path) -> int:
         for result in run_doc(steps, args.mode, cache, ROOT):
             counts[result.status] += 1
             if args.dump and result.status != "skipped":
-                dump(args.dump, result.command.id, result.command.text, result.printed)
+                dump(args.dump, result.command, result.printed)
             label = LABEL.get(result.status, result.status.upper())
             cpu += result.cpu
             times = f"{result.seconds:.1f} s, CPU {result.cpu:.1f} s"

@@ -35,6 +35,11 @@ class Command:
         """``doc:line`` - stable enough to name a test and find the line."""
         return f"{self.doc}:{self.line}"
 
+    @property
+    def dump_name(self) -> str:
+        """The file ``--dump`` writes this command's output to (and ``repaste`` reads)."""
+        return self.id.replace("/", "_").replace(":", "_") + ".txt"
+
 
 @dataclass(frozen=True)
 class FileStep:

@@ -35,7 +35,7 @@ def key(line: str) -> str:
 
 def dumped(folder: Path, command: Command) -> list[str] | None:
     """What ``command`` printed in the dump (``__main__.dump``'s file), or None if not run."""
-    path = folder / (command.id.replace("/", "_").replace(":", "_") + ".txt")
+    path = folder / command.dump_name
     if not path.is_file():
         return None
     lines = path.read_text(encoding="utf-8").split("\n")
@@ -45,11 +45,12 @@ def dumped(folder: Path, command: Command) -> list[str] | None:
 def repaste(shown: tuple[str, ...], printed: list[str]) -> tuple[list[str], list[str]]:
     """(the shown lines with printed figures, the shown lines no printed line matches)."""
     out, unmatched, cursor = list(shown), [], 0
+    keys = [key(line) for line in printed]
     for index, line in enumerate(shown):
-        if line.strip() in ELISION or PROGRESS.search(line) or not key(line):
-            continue
         want = key(line)
-        match = next((j for j in range(cursor, len(printed)) if key(printed[j]) == want), None)
+        if line.strip() in ELISION or PROGRESS.search(line) or not want:
+            continue
+        match = next((j for j in range(cursor, len(keys)) if keys[j] == want), None)
         if match is None:
             unmatched.append(line)
             continue
