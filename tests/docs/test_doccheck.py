@@ -118,3 +118,17 @@ def test_repaste_takes_no_line_from_another_machines_table():
         "│ adxl345 │ 0.4100 │",
     ]
     assert repaste(shown, printed) == (["Macro F1, Motor-4", "│ adxl345 │ 0.4100 │"], [])
+
+
+def test_repaste_refuses_a_folder_without_a_dump_and_an_unknown_document(tmp_path, capsys):
+    """Either is one error line and exit 2, before any document is read or written."""
+    from tools.doccheck.repaste import main
+
+    (tmp_path / "notes.txt").write_text("not a dump")
+    assert main([str(tmp_path)]) == 2
+    assert capsys.readouterr().err == (
+        f"error: {tmp_path} holds no dump: run python -m tools.doccheck --mode all --dump "
+        f"{tmp_path} first\n"
+    )
+    assert main([str(tmp_path), "docs/nope.md"]) == 2
+    assert "not a checked document: docs/nope.md" in capsys.readouterr().err

@@ -19,6 +19,8 @@ import re
 import sys
 from pathlib import Path
 
+from sdt_framework.io import atomic_write_text
+
 from .compare import BOXES, ELISION, PROGRESS, SPACES
 from .extract import ROOT, Command, all_steps
 
@@ -61,18 +63,34 @@ def repaste(shown: tuple[str, ...], printed: list[str]) -> tuple[list[str], list
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Rewrite the selected documents in place; print what could not be matched."""
+    """Rewrite the selected documents in place; print what could not be matched.
+
+    A dump folder that does not exist or holds no dump, or a document that is not
+    one of README.md and docs/*.md, is one ``error:`` line and exit 2, nothing
+    written; each document is replaced whole or not at all (atomic write).
+    """
     parser = argparse.ArgumentParser(prog="python -m tools.doccheck.repaste")
     parser.add_argument("dump", type=Path, help="the folder --dump wrote")
     parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
     args = parser.parse_args(argv)
+    steps_of = all_steps()
+    unknown = sorted(set(args.docs) - set(steps_of))
+    if unknown:
+        return fail(f"not a checked document: {', '.join(unknown)} (README.md or docs/NAME.md)")
+    names = {
+        step.dump_name for steps in steps_of.values() for step in steps if isinstance(step, Command)
+    }
+    if not args.dump.is_dir() or not any((args.dump / name).is_file() for name in names):
+        return fail(
+            f"{args.dump} holds no dump: run python -m tools.doccheck --mode all --dump "
+            f"{args.dump} first"
+        )
     left = 0
-    for doc, steps in all_steps().items():
-        if args.docs and doc not in args.docs:
-            continue
+    for doc in args.docs or steps_of:
         path = ROOT / doc
-        lines = path.read_text(encoding="utf-8").split("\n")
-        for step in steps:
+        text = path.read_text(encoding="utf-8")
+        lines = text.split("\n")
+        for step in steps_of[doc]:
             printed = dumped(args.dump, step) if isinstance(step, Command) else None
             if printed is None:
                 continue
@@ -81,9 +99,19 @@ def main(argv: list[str] | None = None) -> int:
             for line in unmatched:
                 print(f"{step.id}: not printed: {line}")
             left += len(unmatched)
-        path.write_text("\n".join(lines), encoding="utf-8")
+        if "\n".join(lines) != text:
+            try:
+                atomic_write_text(path, "\n".join(lines))
+            except OSError as exc:
+                return fail(f"cannot write {doc}: {exc.strerror}; make it writable and run again")
     print(f"{left} shown line(s) left as they were")
     return 0
+
+
+def fail(message: str) -> int:
+    """One ``error:`` line on stderr; the exit status of a user error."""
+    print(f"error: {message}", file=sys.stderr)
+    return 2
 
 
 if __name__ == "__main__":
