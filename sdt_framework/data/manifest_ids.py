@@ -11,10 +11,9 @@ signal of a run its own ``channel``, or two recordings become one:
   machine, every ``recording_id`` is built from the labels as
   ``[speed/]condition [severity]/run`` (``fault 2/run1``), and a note says so;
 - a file's signals named after their variable with ``/`` made ``-``
-  (``g/a-b`` and ``g-a/b`` are both ``g-a-b``), or two files of one run with
-  the same stem (``a.npy``, ``a.csv``), would give one channel. Names that
-  collide get ``~1``, ``~2``... in path and variable order (the same in every
-  run), and a note says so;
+  (``g/a-b`` and ``g-a/b`` are both ``g-a-b``) would give one channel. Names
+  that collide anywhere in the manifest get ``~1``, ``~2``... in the order of
+  the signal names (``g-a/b`` is ``g-a-b~1`` in every run), and a note says so;
 - with ``{channel}`` in the template, two files giving the same recording (the
   reader strips labels: ``run1`` and ``run1 `` are one) are refused naming both.
 """
@@ -81,33 +80,39 @@ def _run_ids(matched: list[Matched], template: str) -> list[str]:
 
 
 def _numbered(matched: list[Matched]) -> list[str]:
-    """Channel names from the signals (no ``{channel}``), collisions numbered; notes."""
-    by_run: dict[tuple[str, str], dict[str, list[tuple[str, str, Matched, int]]]] = {}
+    """Channel names from the signals (no ``{channel}``), one per source name; notes.
+
+    A signal's source name is its variable (the file's stem when it has none);
+    its channel is that name with ``/`` written ``-``. Where two source names
+    give one channel anywhere in the manifest, each gets ``~N`` by the order of
+    the source names, so a variable has the same channel in every run."""
+    sources: dict[str, set[str]] = {}
     for m in matched:
         m.channels = []
-        for index, info in enumerate(m.infos):
-            variable = "" if info.variable is None else str(info.variable)
-            name = (variable or m.file.stem).replace("/", "-").strip() or m.file.stem
+        for info in m.infos:
+            source = m.file.stem if info.variable is None else str(info.variable)
+            name = source.replace("/", "-").strip() or m.file.stem
+            sources.setdefault(name, set()).add(source)
             m.channels.append(name)
-            run = by_run.setdefault((m.fields.get("machine", ""), m.run_id), {})
-            run.setdefault(name, []).append((str(m.where), variable, m, index))
-    collisions = []
-    for (_, run_id), names in by_run.items():
-        for name, signals in names.items():
-            if len(signals) < 2:
-                continue
-            signals.sort(key=lambda s: s[:2])
-            for number, (_, _, m, index) in enumerate(signals, 1):
-                m.channels[index] = f"{name}~{number}"
-            collisions.append((run_id, name, signals))
-    if not collisions:
+    numbers = {
+        (name, source): f"{name}~{number}"
+        for name, found in sources.items()
+        if len(found) > 1
+        for number, source in enumerate(sorted(found), 1)
+    }
+    for m in matched:
+        for index, info in enumerate(m.infos):
+            source = m.file.stem if info.variable is None else str(info.variable)
+            m.channels[index] = numbers.get((m.channels[index], source), m.channels[index])
+    shared = {name: sorted(found) for name, found in sources.items() if len(found) > 1}
+    if not shared:
         return []
-    run_id, name, signals = collisions[0]
-    what = ", ".join(quote(f"{w} {v}" if v else w, 60) for w, v, *_ in signals[:3])
+    name, found = next(iter(shared.items()))
+    what = ", ".join(f"{quote(source, 60)} -> {name}~{k}" for k, source in enumerate(found, 1))
     return [
-        f"{len(collisions)} channel name(s) shared by several signals of a run, e.g. "
-        f"{quote(name)} in run {quote(run_id)} ({what}); named {name}~1, {name}~2, ... in "
-        f"that order (the manifest's variable column says which is which)"
+        f"{len(shared)} channel name(s) would be given to signals of different names, e.g. "
+        f"{quote(name, 60)} ({what}); numbered by signal name, the same in every run (the "
+        f"manifest's variable column says which is which)"
     ]
 
 

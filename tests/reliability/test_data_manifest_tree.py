@@ -57,17 +57,23 @@ def _one_error_line(err: str) -> str:
 def test_channels_meeting_after_slash_becomes_dash_stay_two_recordings(tmp_path, sdt_main):
     first, second = np.arange(300.0), np.full(300, -7.0)
     _tdms(tmp_path / "tree/healthy/r1/f.tdms", {("g", "a-b"): first, ("g-a", "b"): second})
+    _tdms(tmp_path / "tree/healthy/r2/f.tdms", {("g", "a-b"): first + 1})  # one of the two
     out = tmp_path / "m.csv"
     code, printed, err = _manifest(sdt_main, tmp_path / "tree", "{condition}/{run}/f.tdms", out)
     assert code == 0, err
-    assert "2 rows from 1 files (2 recordings)" in printed
-    assert "named g-a-b~1, g-a-b~2" in err  # said, not silent
-    channels = {r["variable"]: r["channel"] for r in _rows(out)}
-    assert channels == {"g-a/b": "g-a-b~1", "g/a-b": "g-a-b~2"}  # variable order
-    recordings = {r.channel: r for r in open_manifest(out).recordings()}
-    assert set(recordings) == {"g-a-b~1", "g-a-b~2"}
-    np.testing.assert_array_equal(recordings["g-a-b~2"].load(), [first])
-    np.testing.assert_array_equal(recordings["g-a-b~1"].load(), [second])
+    assert "3 rows from 2 files (3 recordings)" in printed
+    assert "'g-a/b' -> g-a-b~1, 'g/a-b' -> g-a-b~2" in err  # said, not silent
+    channels = {(r["recording_id"], r["variable"]): r["channel"] for r in _rows(out)}
+    assert channels == {  # by variable name, the same in every run
+        ("r1", "g-a/b"): "g-a-b~1",
+        ("r1", "g/a-b"): "g-a-b~2",
+        ("r2", "g/a-b"): "g-a-b~2",
+    }
+    recordings = {(r.run, r.channel): r for r in open_manifest(out).recordings()}
+    assert len(recordings) == 3
+    np.testing.assert_array_equal(recordings["r1", "g-a-b~2"].load(), [first])
+    np.testing.assert_array_equal(recordings["r1", "g-a-b~1"].load(), [second])
+    np.testing.assert_array_equal(recordings["r2", "g-a-b~2"].load(), [first + 1])
 
 
 def test_symlinked_run_broken_link_and_fifo_are_used_or_named(tmp_path, sdt_main):
