@@ -84,12 +84,14 @@ def test_symlinked_run_broken_link_and_fifo_are_used_or_named(tmp_path, sdt_main
     os.symlink(tmp_path / "elsewhere/f2", tree / "fault/f2")
     os.symlink("gone.npy", tree / "healthy/h1/ch2.npy")
     os.mkfifo(tree / "fault/f1/ch2.npy")
+    os.symlink("/dev/zero", tree / "fault/f1/ch3.npy")  # never ends: must not be opened
     out = tmp_path / "m.csv"
     code, printed, err = _manifest(sdt_main, tree, "{condition}/{run}/{channel}.npy", out)
     assert code == 0, err
-    assert "3 rows from 3 files (3 recordings); 2 not used" in printed
+    assert "3 rows from 3 files (3 recordings); 3 not used" in printed
     assert "not used: healthy/h1/ch2.npy: broken symbolic link to gone.npy" in err
     assert "not used: fault/f1/ch2.npy: not a regular file (a named pipe)" in err
+    assert "not used: fault/f1/ch3.npy: not a regular file (a character device)" in err
     runs = {r.run: float(r.load().mean()) for r in open_manifest(out).recordings()}
     assert runs == {"h1": 1.0, "f1": 2.0, "f2": 3.0}
 
