@@ -19,7 +19,7 @@ import sdt_framework
 ROOT = Path(sdt_framework.__file__).parent
 
 _BASE = {"errors", "dtypes", "seeding", "hookspecs", "lazy"}
-_IO = {"errors", "inputs", "io"}
+_IO = {"csv_cells", "errors", "inputs", "io"}
 
 #: unit -> the units it may import (besides itself)
 ALLOWED: dict[str, set[str]] = {
@@ -29,6 +29,7 @@ ALLOWED: dict[str, set[str]] = {
     "hookspecs": set(),
     "labels": set(),
     "lazy": set(),
+    "csv_cells": set(),
     "inputs": {"errors"},
     "io": {"errors"},
     "reader_table": {"errors"},
@@ -53,7 +54,7 @@ ALLOWED: dict[str, set[str]] = {
     },
     "data": _BASE | _IO | {"reader_table"},
     "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
-    "features": {"arguments", "errors", "io", "specs"},
+    "features": {"arguments", "csv_cells", "errors", "io", "specs"},
     "edge": {"errors", "specs"},
     "validation": _IO | {"chain", "specs", "stages"},
     "api": {"arguments", "chain", "errors", "features", "registry", "specs"},

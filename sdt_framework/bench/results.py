@@ -19,6 +19,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from ..csv_cells import escape_frame
 from ..io import atomic_path
 from .classify import RunResult
 
@@ -114,10 +115,11 @@ def per_recording(runs: Iterable[RunResult]) -> pd.DataFrame:
 
 
 def write_frame(frame: pd.DataFrame, path: str | os.PathLike[str]) -> None:
-    """Write a DataFrame atomically as Parquet or CSV (by suffix)."""
+    """Write a DataFrame atomically as Parquet or CSV (by suffix); a CSV's text cells
+    spreadsheet-safe (:mod:`sdt_framework.csv_cells`: a condition ``=x`` is ``'=x``)."""
     path = Path(path)
     with atomic_path(path) as tmp:
         if path.suffix == ".parquet":
             frame.to_parquet(tmp, index=False)
         else:
-            frame.to_csv(tmp, index=False)
+            escape_frame(frame).to_csv(tmp, index=False)

@@ -26,6 +26,7 @@ from pathlib import Path
 
 import pandas as pd
 
+from ..csv_cells import unescape_frame
 from ..errors import SDTError
 from ..toml_files import decode_text, parse_toml, read_bytes
 
@@ -130,7 +131,11 @@ def load_allocation(path: str | os.PathLike[str], runs: Iterable[Run]) -> pd.Dat
     )
     text = decode_text(raw, path, "TOML file" if toml else "CSV file")
     try:
-        table = _toml_entries(path, text) if toml else pd.read_csv(io.StringIO(text), dtype=str)
+        table = (
+            _toml_entries(path, text)
+            if toml
+            else unescape_frame(pd.read_csv(io.StringIO(text), dtype=str))
+        )
     except ValueError as exc:
         reason = " ".join(str(exc).split())[:160]
         raise SDTError(f"{path}: cannot read the allocation table ({reason})") from None

@@ -77,8 +77,10 @@ def manifest(
     Each file matching --pattern gives one row per signal it holds. With {channel}
     in the pattern a file's signals are that channel's acquisitions; without it,
     each signal is a channel named by the file. A severity of '-' is healthy.
-    Files that do not match are listed with the reason. A DAQ campaign's tree
-    reads with a pattern such as '{machine}/{condition} {severity}/{run}/{channel}.tdms'.
+    Linked folders are followed (loops are not); every file or folder not used
+    (no match, no reader, a broken link, a FIFO) is listed with the reason. A
+    DAQ campaign's tree reads with a pattern such as
+    '{machine}/{condition} {severity}/{run}/{channel}.tdms'.
 
     Example:
 
@@ -98,16 +100,18 @@ def manifest(
             readers=registry(ctx).signal_readers(),
         )
     atomic_write_text(out, manifest_csv(built))
+    for note in built.notes:
+        err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
     for path, why in built.unmatched[:SHOWN_UNMATCHED]:
-        err_console.print(f"not matched: {path}: {why}", markup=False, highlight=False,
+        err_console.print(f"not used: {path}: {why}", markup=False, highlight=False,
                           soft_wrap=True)  # fmt: skip
     if len(built.unmatched) > SHOWN_UNMATCHED:
-        err_console.print(f"not matched: {len(built.unmatched) - SHOWN_UNMATCHED} more files",
+        err_console.print(f"not used: {len(built.unmatched) - SHOWN_UNMATCHED} more",
                           markup=False, highlight=False)  # fmt: skip
     recordings = {(r["machine"], r["recording_id"], r["channel"]) for r in built.rows}
     console.print(
         f"wrote {out}: {len(built.rows)} rows from {built.files} files ({len(recordings)} "
-        f"recordings); {len(built.unmatched)} files not matched",
+        f"recordings); {len(built.unmatched)} not used",
         highlight=False,
         soft_wrap=True,
     )

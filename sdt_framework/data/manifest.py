@@ -76,7 +76,7 @@ def _severity(where: str, text: str) -> int | None:
     if not text or text.lower() == "nan":
         return None
     try:
-        value = float(text)
+        value = float(text) if text.isascii() else math.nan  # float("٣") would be 3
     except ValueError:
         value = math.nan
     if not (math.isfinite(value) and value == int(value)):
@@ -96,8 +96,9 @@ def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
                 f"must not be empty (field {field!r} is)"
             )
     try:
-        rate = float(_cell(row, "sampling_rate_hz")) if _cell(row, "sampling_rate_hz") else None
-        if rate is not None and not (np.isfinite(rate) and rate > 0):
+        text = _cell(row, "sampling_rate_hz")
+        rate = float(text) if text else None
+        if rate is not None and not (text.isascii() and np.isfinite(rate) and rate > 0):
             raise ValueError
     except ValueError:
         raise SDTError(

@@ -4,8 +4,11 @@ A template such as ``{machine}/{condition} {severity}/{run}/{channel}.tdms``
 is matched against every file's path relative to the folder (``/``
 separated). Fields: ``machine``, ``speed``, ``condition``, ``severity``,
 ``run`` and ``channel``; each matches one or more characters within one
-folder or file name (``severity``: a whole number, or ``-`` for healthy), the
-rest of the template literally. ``condition`` and ``run`` are required.
+folder or file name (``severity``: a whole number in ASCII digits ``0-9``, or
+``-`` for healthy; a Unicode digit class would take an Arabic-Indic ``٣`` for
+3), the rest of the template literally. ``condition`` and ``run`` are
+required; an unknown field (``{cond}``) or a lone brace is refused naming it
+and the known ones.
 
 Each matched file is scanned by its registered reader
 (:func:`~sdt_framework.data.signal_files.scan_file`) and gives one row per
@@ -13,19 +16,27 @@ signal it holds: its ``variable``, the file's rate and units (a format that
 holds no rate takes ``rate_hz``). When the template names the channel, a
 file's signals are that channel's acquisitions (rows sharing machine, run and
 channel are one recording's acquisitions in a manifest); when it does not,
-each signal is its own channel, named by the file. Files that do not match, or
-that no reader reads, are returned with the reason, never dropped silently.
+each signal is its own channel, named by the file. Every entry of the tree
+is accounted for (:mod:`.manifest_walk`: linked folders followed, loops,
+broken links and FIFOs named): files that do not match, that no reader reads,
+or that are not regular files are returned with the reason, never dropped
+silently. Each run and channel is its own recording (:mod:`.manifest_ids`).
+Cells are written spreadsheet-safe (:mod:`sdt_framework.csv_cells`).
 """
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ..csv_cells import escape_cell
 from ..errors import SDTError
+from .manifest_ids import Matched, name_recordings
+from .manifest_walk import walk_tree
 from .readers import SignalInfo, acceleration_units
 from .signal_files import scan_file
 from .tokens import quote
@@ -37,28 +48,26 @@ REQUIRED_FIELDS = ("condition", "run")
 COLUMNS = ("path", "sampling_rate_hz", "condition", "severity", "recording_id", "channel",
            "machine", "units", "variable", "speed", "full_scale_g")  # fmt: skip
 _FIELD = re.compile(r"\{([^{}]*)\}")
+_KNOWN = ", ".join("{" + f + "}" for f in FIELDS)
 
 
 @dataclass
 class BuiltManifest:
-    """Manifest rows (column -> text), files read and matched, and those left out with why."""
+    """Manifest rows (column -> text), files read and matched, entries left out with why, and
+    notes (run ids built from labels, channel names numbered)."""
 
     rows: list[dict[str, str]] = field(default_factory=list)
     files: int = 0
     matched: int = 0
     unmatched: list[tuple[str, str]] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
 
 
 def _segment_regex(segment: str, template: str) -> str:
     out, pos = [], 0
     for found in _FIELD.finditer(segment):
         name = found.group(1)
-        if name not in FIELDS:
-            raise SDTError(
-                f"--pattern {quote(template, 80)}: unknown field {{{quote(name)}}}; "
-                f"use {', '.join('{' + f + '}' for f in FIELDS)}"
-            )
-        value = r"\d+|-" if name == "severity" else "[^/]+?"
+        value = "[0-9]+|-" if name == "severity" else "[^/]+?"  # not \d: ٣ is no level
         out += [re.escape(segment[pos : found.start()]), f"(?P<{name}>{value})"]
         pos = found.end()
     return "".join([*out, re.escape(segment[pos:])])
@@ -67,6 +76,18 @@ def _segment_regex(segment: str, template: str) -> str:
 def compile_template(template: str) -> list[tuple[str, re.Pattern[str]]]:
     """One compiled pattern per ``/``-separated part of ``template``; bad templates refused."""
     names = _FIELD.findall(template)
+    unknown = [name for name in dict.fromkeys(names) if name not in FIELDS]
+    if unknown:
+        raise SDTError(
+            f"--pattern {quote(template, 80)}: unknown field(s) "
+            f"{', '.join('{' + quote(n, 40)[1:-1] + '}' for n in unknown)}; the fields are {_KNOWN}"
+        )
+    stray = _FIELD.sub("", template)
+    if "{" in stray or "}" in stray:
+        raise SDTError(
+            f"--pattern {quote(template, 80)}: a {'{' if '{' in stray else '}'!r} without its "
+            f"pair; write each field as {{name}}, one of {_KNOWN}"
+        )
     missing = [f for f in REQUIRED_FIELDS if f not in names]
     if missing:
         raise SDTError(
@@ -90,34 +111,44 @@ def _match(
     for part, (segment, pattern) in zip(parts, patterns, strict=True):
         found = pattern.fullmatch(part)
         if found is None:
-            return f"{quote(part, 60)} does not match {quote(segment, 60)}"
-        fields.update(found.groupdict())
+            digits = "{severity}" in segment and any(c.isdigit() and not c.isascii() for c in part)
+            hint = "; {severity} is ASCII digits 0-9 or '-'" if digits else ""
+            return f"{quote(part, 60)} does not match {quote(segment, 60)}{hint}"
+        fields.update({name: value.strip() for name, value in found.groupdict().items()})
+    empty = [name for name, value in fields.items() if not value]
+    if empty:  # the manifest reader strips labels: a blank one would be no label
+        return f"{{{empty[0]}}} is only spaces"
     severity = fields.get("severity", "")
     fields["severity"] = "" if severity == "-" else severity
     return fields
 
 
-def _row(file: Path, out_dir: Path, fields: dict[str, str], info: SignalInfo,
-         rate_hz: float | None, full_scale_g: str) -> dict[str, str]:  # fmt: skip
+def _row(m: Matched, info: SignalInfo, channel: str, out_dir: Path,
+         rate_hz: float | None) -> dict[str, str]:  # fmt: skip
     """One manifest row: labels from the path, rate and units from the file."""
     try:
-        path = file.resolve().relative_to(out_dir.resolve()).as_posix()
+        path = m.file.resolve().relative_to(out_dir.resolve()).as_posix()
     except ValueError:
-        path = str(file.resolve())
+        path = str(m.file.resolve())
     rate = info.rate_hz if info.rate_hz is not None else rate_hz
     return {
         "path": path,
         "sampling_rate_hz": repr(float(rate)),  # type: ignore[arg-type]
-        "condition": fields["condition"],
-        "severity": fields["severity"],
-        "recording_id": fields["run"],
-        "channel": fields.get("channel") or str(info.variable or file.stem).replace("/", "-"),
-        "machine": fields.get("machine", ""),
+        "condition": m.fields["condition"],
+        "severity": m.fields["severity"],
+        "recording_id": m.run_id,
+        "channel": channel,
+        "machine": m.fields.get("machine", ""),
         "units": (acceleration_units(info.units) if info.units else None) or "",
         "variable": "" if info.variable is None else str(info.variable),
-        "speed": fields.get("speed", ""),
-        "full_scale_g": full_scale_g,
+        "speed": m.fields.get("speed", ""),
+        "full_scale_g": m.full_scale_g,
     }
+
+
+def _positive(option: str, value: float | None) -> None:
+    if value is not None and not (math.isfinite(value) and value > 0):
+        raise SDTError(f"{option} {value:g}: give a finite number above 0")
 
 
 def build_manifest(
@@ -132,18 +163,20 @@ def build_manifest(
     """Rows for every file under ``folder`` that matches ``template``; paths relative to
     ``out_dir`` (the manifest's folder) where they can be."""
     patterns = compile_template(template)
+    _positive("--rate-hz", rate_hz)
+    _positive("--full-scale-g", full_scale_g)
     if not folder.is_dir():
         raise SDTError(f"{folder}: not a folder; give the root of the recordings")
     built = BuiltManifest()
-    files = sorted(p for p in folder.rglob("*") if p.is_file())
-    for file in files:
-        relative = file.relative_to(folder)
+    tree = walk_tree(folder)
+    matched: list[Matched] = []
+    options = {"full_scale_g": full_scale_g} if full_scale_g is not None else {}
+    for relative, file in tree.files:
         fields = _match(relative.parts, patterns)
         if isinstance(fields, str):
             built.unmatched.append((relative.as_posix(), fields))
             continue
         built.matched += 1
-        options = {"full_scale_g": full_scale_g} if full_scale_g is not None else {}
         try:
             reader, infos = scan_file(file, readers)
             if "full_scale_g" in reader.options:
@@ -157,17 +190,24 @@ def build_manifest(
             why = f"a {reader.label} file holds no rate; give --rate-hz"
             built.unmatched.append((relative.as_posix(), why))
             continue
-        built.files += 1
         scale = repr(full_scale_g) if options and "full_scale_g" in reader.options else ""
-        built.rows += [_row(file, out_dir, fields, info, rate_hz, scale) for info in infos]
+        matched.append(Matched(relative, file, fields, list(infos), scale))
+    built.unmatched = sorted(built.unmatched + tree.left_out)
+    built.notes = name_recordings(matched, template, "channel" in _FIELD.findall(template))
+    built.files = len(matched)
+    built.rows = [
+        _row(m, info, channel, out_dir, rate_hz)
+        for m in matched
+        for info, channel in zip(m.infos, m.channels, strict=True)
+    ]
     if not built.rows:
         first = (
             f"; first: {built.unmatched[0][0]}: {built.unmatched[0][1]}" if built.unmatched else ""
         )
         what = (
-            f"matches {built.matched} of the {len(files)} files under {folder} and none of them "
-            f"could be read" if built.matched else
-            f"matches none of the {len(files)} files under {folder}"
+            f"matches {built.matched} of the {len(tree.files)} files under {folder} and none of "
+            f"them could be read" if built.matched else
+            f"matches none of the {len(tree.files)} files under {folder}"
         )  # fmt: skip
         raise SDTError(f"--pattern {quote(template, 80)} {what}{first}")
     return built
@@ -182,5 +222,5 @@ def manifest_csv(built: BuiltManifest) -> str:
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     writer.writerow(used)
-    writer.writerows([r[c] for c in used] for r in built.rows)
+    writer.writerows([escape_cell(r[c]) for c in used] for r in built.rows)
     return buffer.getvalue()

@@ -5,7 +5,9 @@ every problem can be named by its line: an empty (0-byte) file, bytes that
 are not UTF-8, a row with more or fewer fields than the header (a ragged row:
 pandas would stop with a tokenizer traceback or fill the gap silently), a
 repeated column name, a header with no row under it. Values quoted from the
-file are short tokens (:func:`~sdt_framework.data.tokens.quote`).
+file are short tokens (:func:`~sdt_framework.data.tokens.quote`). A cell that
+sdt wrote spreadsheet-safe (``'=x`` for a label ``=x``,
+:mod:`sdt_framework.csv_cells`) reads back as the label.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ import io
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..csv_cells import unescape_cell
 from ..errors import SDTError
 from ..inputs import require_regular_file
 from .tokens import brief, quote
@@ -56,7 +59,7 @@ def _csv_rows(path: Path, data: bytes) -> tuple[list[str], list[ManifestRow]]:
             if not any(cell.strip() for cell in cells):
                 continue  # a blank line, as pandas skips it
             if header is None:
-                header = [cell.strip() for cell in cells]
+                header = [unescape_cell(cell.strip()) for cell in cells]
                 header_line = reader.line_num
                 continue
             if len(cells) != len(header):
@@ -65,6 +68,7 @@ def _csv_rows(path: Path, data: bytes) -> tuple[list[str], list[ManifestRow]]:
                     f"(line {header_line}) has {len(header)}; quote a value holding ','"
                 )
             line = reader.line_num
+            cells = [unescape_cell(cell) for cell in cells]
             rows.append(ManifestRow(f"line {line}", line, dict(zip(header, cells, strict=True))))
     except csv.Error as exc:
         raise SDTError(f"manifest {path} line {reader.line_num}: {brief(exc)}") from None

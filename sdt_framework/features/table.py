@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ..csv_cells import escape_frame, unescape_frame
 from ..errors import SDTError
 from ..io import atomic_path
 
@@ -102,7 +103,7 @@ def write_feature_table(table: FeatureTable, path: str | os.PathLike[str]) -> Pa
                 *_INDEX,
                 *(f"{n}[{u}]" for n, u in zip(table.names, table.units, strict=True)),
             ]
-            frame.to_csv(tmp, index=False, float_format="%.9g")
+            escape_frame(frame).to_csv(tmp, index=False, float_format="%.9g")
         else:
             import pyarrow as pa
             import pyarrow.parquet as pq
@@ -131,7 +132,7 @@ def read_feature_table(path: str | os.PathLike[str]) -> FeatureTable:
         names = tuple(c for c in frame.columns if c not in _INDEX)
         units = tuple(arrow.schema.field(n).metadata[b"unit"].decode() for n in names)
     else:
-        frame = pd.read_csv(path)
+        frame = unescape_frame(pd.read_csv(path))
         meta = {}
         parsed = [_CSV_HEADER.match(c) for c in frame.columns if c not in _INDEX]
         if not all(parsed):

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from ..csv_cells import unescape_frame
 from ..explore.designs import DESIGNS
 from .document import Block, Figure, Heading, Paragraph, Table
 from .style import new_figure, save_figure
@@ -31,7 +32,7 @@ def _read(folder: Path) -> dict[str, pd.DataFrame] | None:
     tables = {}
     for name in _TABLES:
         try:
-            tables[name] = pd.read_csv(folder / f"{name}.csv")
+            tables[name] = unescape_frame(pd.read_csv(folder / f"{name}.csv"))
         except (OSError, ValueError, pd.errors.EmptyDataError):
             tables[name] = pd.DataFrame()
     return tables

@@ -24,6 +24,7 @@ from typing import Any
 import pandas as pd
 
 from ..bench.config import BenchmarkConfig, load_config
+from ..csv_cells import unescape_frame
 from ..errors import SDTError, one_line
 from ..verdict.inputs import recording_gaps
 
@@ -88,7 +89,9 @@ class ResultsFolder:
 
 
 def _read(path: Path) -> pd.DataFrame:
-    return pd.read_parquet(path) if path.suffix == ".parquet" else pd.read_csv(path)
+    if path.suffix == ".parquet":
+        return pd.read_parquet(path)
+    return unescape_frame(pd.read_csv(path))  # labels as written: '=x is =x
 
 
 def _check_per_recording(folder: ResultsFolder) -> None:

@@ -146,8 +146,8 @@ def test_manifest_building_names_what_a_file_lacks(sdt_main, tmp_path):
     assert "ch1.wav: integer PCM (32-bit) samples are counts" in line
     code, printed, err = sdt_main(*args, "--full-scale-g", "50")
     assert code == 0
-    assert "not matched: bench/healthy/r1/ch2.npy: a NPY file holds no rate; give --rate-hz" in err
-    assert "1 rows from 1 files (1 recordings); 1 files not matched" in printed
+    assert "not used: bench/healthy/r1/ch2.npy: a NPY file holds no rate; give --rate-hz" in err
+    assert "1 rows from 1 files (1 recordings); 1 not used" in printed
     assert (
         out.read_text(encoding="utf-8")
         .splitlines()[1]

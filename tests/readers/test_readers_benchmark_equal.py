@@ -79,7 +79,7 @@ def runs(tmp_path, monkeypatch, sdt_main):
         code, out, err = sdt_main("dataset", "manifest", str(root), "--pattern",
                                   f"{TEMPLATE}.{fmt}", "--out", str(manifest), *extra)  # fmt: skip
         assert code == 0, err
-        assert f"from {files} files ({files} recordings); 0 files not matched" in out
+        assert f"from {files} files ({files} recordings); 0 not used" in out
         code, _, err = sdt_main("benchmark", "--data", str(manifest), *ARGS,
                                 "--out", str(tmp_path / f"out-{fmt}"))  # fmt: skip
         assert code == 0, err

@@ -62,7 +62,7 @@ def test_a_reader_plugin_reads_in_inspect_and_in_a_manifest(fake_dist, sdt_main,
     code, out, err = sdt_main("dataset", "manifest", str(root), "--pattern",
                               "{condition}/{run}.acme", "--out", str(manifest))  # fmt: skip
     assert code == 0, err
-    assert "1 rows from 1 files (1 recordings); 0 files not matched" in out
+    assert "1 rows from 1 files (1 recordings); 0 not used" in out
     assert "recordings/healthy/run1.acme,1000.0,healthy,,run1,run1" in manifest.read_text()
     from sdt_framework.data import open_dataset
     from sdt_framework.registry import build_registry
