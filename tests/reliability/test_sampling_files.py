@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -111,3 +112,12 @@ def test_a_part_decimates_with_its_source_and_falls_back_without_a_filter() -> N
 def test_a_part_citing_a_missing_document_for_its_sampling_is_refused() -> None:
     with pytest.raises(SpecFileError, match="sampling: document 'dx' is not in \\[documents\\]"):
         load_part_text(PART.format(digital="odr_fraction = 0.25", doc="dx"), "toy.toml")
+
+
+def test_sensors_show_says_the_paper_profiles_are_the_papers_model(tmp_path: Path) -> None:
+    command = [sys.executable, "-m", "sdt_framework", "sensors", "show"]
+    env = {**os.environ, "COLUMNS": "200"}
+    for name, shown in (("adxl357", "sample-then-filter (the paper's model)"),
+                        ("adxl345", "sample-then-filter (the paper's model)")):  # fmt: skip
+        out = subprocess.run([*command, name], capture_output=True, text=True, env=env).stdout
+        assert shown in out, name
