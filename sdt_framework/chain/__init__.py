@@ -16,6 +16,9 @@ LowPass, Sample, WhiteNoise, Quantise, Stage, RunContext, SameRate
 ChainInputError, ChainInputTypeError
     The one-line error for a recording or rate the chain cannot take (the second
     one, for samples that are not real numbers, is also a TypeError).
+band_fate(sensor, fs, band), chain_gain(sensor, fs, freqs), BandFate
+    Whether content in a band reaches the output passed, attenuated or aliased
+    (folded below the output Nyquist), and the gain line by line.
 simulation_problem(sensor, fs)
     Why a recording at fs Hz is too slow to simulate a sensor (None if it is not).
 """
@@ -30,6 +33,7 @@ if TYPE_CHECKING:
     from .chain import Chain, build_stages, compile_chain, degrade
     from .checks import ChainInputError, ChainInputTypeError
     from .filters import design_lowpass, is_skipped, lowpass_gain
+    from .response import BandFate, band_fate, chain_gain
     from .simulable import simulation_problem
     from .stages import (
         LowPass,
@@ -55,6 +59,9 @@ _WHERE = {
     "is_skipped": "filters",
     "lowpass_gain": "filters",
     "simulation_problem": "simulable",
+    "BandFate": "response",
+    "band_fate": "response",
+    "chain_gain": "response",
     "LowPass": "stages",
     "Quantise": "stages",
     "RunContext": "stages",
@@ -66,6 +73,7 @@ _WHERE = {
 }
 
 __all__ = [
+    "BandFate",
     "Chain",
     "ChainInputError",
     "ChainInputTypeError",
@@ -76,7 +84,9 @@ __all__ = [
     "Sample",
     "Stage",
     "WhiteNoise",
+    "band_fate",
     "build_stages",
+    "chain_gain",
     "compile_chain",
     "degrade",
     "design_lowpass",

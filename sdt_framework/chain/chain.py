@@ -33,7 +33,10 @@ _BLOCK_VALUES = 1 << 19  # float64 values per block of rows: 4 MB
 def build_stages(sensor: SensorSpec, fs: float) -> tuple[Stage, ...]:
     """The stages of ``sensor``'s chain for a recording at ``fs`` Hz, in order.
 
-    Left out: any low-pass whose cutoff is None or at or above the Nyquist of
+    With ``sampling = "decimate"`` the digital low-pass runs at ``fs`` as the
+    decimation filter, just before the sampling stage; otherwise (the paper's
+    model) at the target rate after the noise. Left out: any low-pass whose
+    cutoff is None or at or above the Nyquist of
     the rate it runs at (documented skip rule), the sampling stage when the target rate
     equals ``fs`` (interpolating on the same grid is the identity), the
     quantiser when ``sensor.requantise`` is False. The noise stage is kept when
@@ -51,14 +54,22 @@ def build_stages(sensor: SensorSpec, fs: float) -> tuple[Stage, ...]:
         sos = None if cutoff is None else design_lowpass(order, cutoff, fs)
         if sos is not None:
             own[name] = LowPass(name, fs, sos)
+    digital = None
+    if sensor.digital_cutoff_hz is not None and sensor.digital_order is not None:
+        # the paper's model filters the sampled signal; a decimating (sigma-delta) part
+        # filters at the input rate first, so what lies above the output Nyquist is
+        # attenuated by the filter's stopband instead of folding into the band
+        rate, name = (fs, "decimation") if sensor.sampling == "decimate" else (target, "digital")
+        sos = design_lowpass(sensor.digital_order, sensor.digital_cutoff_hz, rate)
+        digital = None if sos is None else LowPass(name, rate, sos)
+    if digital is not None and digital.name == "decimation":
+        own["decimation"] = digital
     if target != fs:
         own["sample"] = Sample(fs, target)
     if sensor.inject_noise and sensor.noise_density_ug_rthz > 0:
         own["noise"] = WhiteNoise(target, sensor.noise_density_ug_rthz)
-    if sensor.digital_cutoff_hz is not None and sensor.digital_order is not None:
-        sos = design_lowpass(sensor.digital_order, sensor.digital_cutoff_hz, target)
-        if sos is not None:
-            own["digital"] = LowPass("digital", target, sos)
+    if digital is not None and digital.name == "digital":
+        own["digital"] = digital
     if sensor.requantise and sensor.full_scale_g is not None and sensor.adc_bits is not None:
         own["quantise"] = Quantise(target, sensor.full_scale_g, sensor.adc_bits)
     if not sensor.stages:

@@ -65,8 +65,15 @@ def _tolerance_text(tolerance: Any) -> str:
     return f"{tolerance.distribution} {what} {spread}"
 
 
+def sampling_text(model: str) -> str:
+    """A sampling model as `sensors show` prints it: the paper's named as such."""
+    return f"{model} (the paper's model)" if model == "sample-then-filter" else model
+
+
 def profile_cell(spec: SensorSpec, field: str, data: dict[str, Any]) -> Any:
     """The value of ``field`` as `sensors show` prints it: stages and tolerances readable."""
+    if field == "sampling":
+        return sampling_text(spec.sampling)
     if field == "stages":
         uses = []
         for use in spec.stages:
@@ -212,6 +219,8 @@ def provenance_rows(resolved: Any) -> tuple[list[list[str]], list[str]]:
         value = src.value
         if isinstance(value, dict):
             text = "/".join(_fmt(value[a]) for a in "xyz") + " (x/y/z)"
+        elif isinstance(value, str):
+            text = sampling_text(value)
         else:
             text = "none" if value is None else _fmt(value)
         if src.odr_fraction is not None:

@@ -27,6 +27,7 @@ from pydantic import Field, field_validator, model_validator
 
 from ..specs import Spec
 from .error_terms import ErrorTerm, check_terms
+from .sampling import PartSampling
 from .supply import PartSupply
 from .values import AxisValues, Basis, Document, Entry, Model, NoPrice, Price
 
@@ -154,6 +155,11 @@ class PartSpec(Spec):
         description="Supply current per mode, standby current, turn-on time "
         "(sdt_framework.parts.supply); not hashed: the chain does not depend on it.",
     )
+    sampling: PartSampling | None = Field(
+        default=None,
+        description="How the part reaches its output rate, sourced ([sampling], "
+        "sdt_framework.parts.sampling); none: the paper's sample-then-filter model.",
+    )
 
     @model_validator(mode="after")
     def _check_structure(self) -> PartSpec:
@@ -181,6 +187,8 @@ class PartSpec(Spec):
         check_terms(self.errors, self.documents, self.modes)
         if self.supply is not None:
             self.supply.check(self.documents, self.modes)
+        if self.sampling is not None and self.sampling.doc not in self.documents:
+            raise ValueError(f"sampling: document {self.sampling.doc!r} is not in [documents]")
         for field in CHAIN_VALUES:
             keys = setters.get(field, [])
             if len(keys) > 1:
@@ -228,8 +236,9 @@ class PartSpec(Spec):
     def content_dict(self) -> dict[str, Any]:
         """Behaviour-defining fields; a part without error terms hashes as before they existed."""
         data = super().content_dict()
-        if not data.get("errors"):
-            data.pop("errors", None)
+        for key in ("errors", "sampling"):  # parts without them hash as before they existed
+            if not data.get(key):
+                data.pop(key, None)
         data.pop("supply", None)  # the node's energy, not the chain
         return data
 

@@ -22,6 +22,7 @@ from pydantic import ValidationError
 
 from ..errors import SDTError, field_errors
 from ..specs import SensorSpec
+from ..specs.sensor import PAPER_SAMPLING
 from ..specs.stage_use import StageUse, Tolerance
 from .error_modes import (
     ERROR_KEYS,
@@ -52,7 +53,7 @@ class FieldSource:
     """Where one value of a resolved part comes from."""
 
     field: str
-    value: float | int | dict[str, float] | None
+    value: float | int | str | dict[str, float] | None
     source: str  # document title and revision, or "chain model"
     where: str
     basis: str
@@ -198,6 +199,9 @@ def resolve(part: PartSpec, given: Mapping[str, str] | None = None) -> Resolved:
         at = next(i for i, s in enumerate(sources) if s.field == "digital_order")
         sources[at] = replace(cutoff, field="digital_order", note="no digital stage in this mode")
     cited = "; ".join(dict.fromkeys(s.source for s in sources if s.source not in NOT_DOCUMENTS))
+    # after ``cited``: the sensor's source line (hashed) stays that of its values
+    numbers["sampling"], sampled = _sampling(part, numbers["digital_cutoff_hz"])
+    sources.append(sampled)
     terms = term_sources(part, mode, choice)
     stages, tolerances = error_stages(terms, choice)
     named = {**mode, **shown_keys(choice)}
@@ -206,6 +210,28 @@ def resolve(part: PartSpec, given: Mapping[str, str] | None = None) -> Resolved:
         supply = resolve_supply(part.supply, part.documents, mode)
         sensor = sensor.model_copy(update={"supply": supply})
     return Resolved(part, mode, sensor, tuple(sources), choice, terms)
+
+
+def _sampling(part: PartSpec, digital_cutoff: object) -> tuple[str, FieldSource]:
+    """The part's sampling model and its provenance (the paper's when it states none)."""
+    given = part.sampling
+    if given is None:
+        return PAPER_SAMPLING, FieldSource(
+            "sampling", PAPER_SAMPLING, "chain model", "docs/chain.md", "model", "",
+            note="the paper's model: samples at the output rate, digital low-pass after",
+        )  # fmt: skip
+    doc = part.documents[given.doc]
+    notes = [n for n in (given.stopband and f"stopband: {given.stopband}",
+                         given.stopband_model and f"modelled as {given.stopband_model}",
+                         given.note) if n]  # fmt: skip
+    model = given.model
+    if model == "decimate" and digital_cutoff is None:
+        model = PAPER_SAMPLING
+        notes.insert(0, "no digital low-pass in this mode, so no decimation filter to model")
+    source = f"{doc.title}, {doc.revision}" + (" (secondary)" if doc.secondary else "")
+    fs = FieldSource("sampling", model, source, given.where, given.basis, "part",
+                     note="; ".join(notes), doc=given.doc)  # fmt: skip
+    return model, fs
 
 
 def _sensor(

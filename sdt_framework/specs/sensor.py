@@ -22,6 +22,10 @@ MODE_SUFFIX = re.compile(r"\[([a-z0-9_]+=[a-z0-9._+-]+)(,[a-z0-9_]+=[a-z0-9._+-]
 #: rate of a sensor that samples at whatever rate the recording has (the identity reference)
 NATIVE = "native"
 Axis = Literal["x", "y", "z"]
+#: how the chain reaches the output rate (docs/chain.md, "Two sampling models")
+Sampling = Literal["sample-then-filter", "decimate"]
+#: the paper's model (Table 1): every existing profile, and left out of the content hash
+PAPER_SAMPLING = "sample-then-filter"
 #: SensorSpec fields that may differ per axis (``SensorSpec.per_axis``)
 AXIS_FIELDS = ("noise_density_ug_rthz", "mech_cutoff_hz")
 #: annotations of the SensorSpec fields a tolerance may apply to
@@ -76,6 +80,14 @@ class SensorSpec(Spec):
     digital_order: int | None = Field(
         default=None, ge=1, le=16, description="On-chip digital low-pass order."
     )
+    sampling: Sampling = Field(
+        default=PAPER_SAMPLING,
+        description="How the output rate is reached. 'sample-then-filter': the paper's model "
+        "(Table 1): sample at the output rate with no decimation filter (content above the "
+        "output Nyquist folds in), the digital low-pass after. 'decimate': a sigma-delta "
+        "part: the digital low-pass is its decimation filter, run at the input rate before "
+        "the output rate.",
+    )
     per_axis: dict[Axis, dict[str, float]] | None = Field(
         default=None,
         description="Per-axis values of noise_density_ug_rthz / mech_cutoff_hz where the "
@@ -112,6 +124,11 @@ class SensorSpec(Spec):
     def _check_digital(self) -> SensorSpec:
         if (self.digital_cutoff_hz is None) != (self.digital_order is None):
             raise ValueError("digital_cutoff_hz and digital_order must be given together")
+        if self.sampling == "decimate" and self.digital_cutoff_hz is None:
+            raise ValueError(
+                "sampling = 'decimate' needs the decimation low-pass: give digital_cutoff_hz "
+                "and digital_order (or use sampling = 'sample-then-filter')"
+            )
         if self.requantise and (self.full_scale_g is None or self.adc_bits is None):
             raise ValueError("full_scale_g and adc_bits are required when requantise is true")
         if self.sampling_rate_hz == NATIVE:
@@ -167,6 +184,8 @@ class SensorSpec(Spec):
         for key in self._hash_if_set:
             if not data.get(key):
                 data.pop(key, None)
+        if data.get("sampling") == PAPER_SAMPLING:  # profiles made before it keep their hash
+            data.pop("sampling")
         for use, entry in zip(self.stages, data.get("stages", ()), strict=False):
             if use.spec is not None:  # the implementation bound to the name
                 entry["impl"] = use.spec.content_hash()

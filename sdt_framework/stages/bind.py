@@ -171,7 +171,9 @@ def build_extra(sensor: SensorSpec, fs: float) -> list[tuple[StageSpec, Any]]:
 def place(own: Mapping[str, Any], extra: Sequence[tuple[StageSpec, Any]]) -> list[Any]:
     """The chain's own stages (by anchor name, absent ones left out) with the extras placed.
 
-    Extras placed at the same spot keep the order the profile lists them in; a
+    Extras placed at the same spot keep the order the profile lists them in;
+    ``own["decimation"]`` (a decimating part's low-pass) runs right before the
+    sampler, after the extras placed before it; a
     sampler stage replaces ``own["sample"]`` (and runs even where the rates
     are equal and the chain has no sampler of its own).
     """
@@ -185,6 +187,8 @@ def place(own: Mapping[str, Any], extra: Sequence[tuple[StageSpec, Any]]) -> lis
     out: list[Any] = []
     for anchor in ANCHORS:
         out += groups.get(("before", anchor), [])
+        if anchor == "sample" and own.get("decimation") is not None:
+            out.append(own["decimation"])  # a sigma-delta part's filter, just before its sampler
         stage = sampler if anchor == "sample" and sampler is not None else own.get(anchor)
         if stage is not None:
             out.append(stage)

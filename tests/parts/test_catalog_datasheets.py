@@ -95,8 +95,10 @@ def test_every_value_of_every_mode_has_its_provenance(name):
             if src.absent:  # what the documents lack, what stands in and why
                 assert src.why, (resolved.sensor.name, src.field)
                 assert src.value is None or (src.source and src.where)
-            elif src.source == "chain model":  # the chain's own filter orders, SPEC section 2
-                assert src.field in {"mech_order", "analog_order"}
+            elif src.source == "chain model":  # the chain's own filter orders, SPEC section 2,
+                # and the paper's sampling model where a part states none (docs/chain.md)
+                assert src.field in {"mech_order", "analog_order", "sampling"}
+                assert src.field != "sampling" or src.value == "sample-then-filter"
             else:
                 assert src.source and src.where and src.basis, (resolved.sensor.name, src.field)
     for key, mode in part.modes.items():
