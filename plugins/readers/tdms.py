@@ -30,6 +30,7 @@ from sdt_framework import hookimpl
 from sdt_framework.data.readers import SignalInfo, as_acquisitions, increment_rate, pick
 from sdt_framework.data.recording import DataFileError
 from sdt_framework.data.tokens import brief, quote
+from sdt_framework.errors import InternalError
 from sdt_framework.specs import ReaderSpec
 
 
@@ -55,6 +56,8 @@ def _load(path: Path, group: str | None = None, name: str | None = None):
                 found = tdms[group][name][:]
     except OSError as exc:
         raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
+    except InternalError:
+        raise
     except Exception as exc:  # npTDMS raises ValueError, KeyError, struct.error... on bad bytes
         raise DataFileError(
             f"{path}: not a readable TDMS file (npTDMS: {brief(exc)}); a copy cut short?"
@@ -129,6 +132,11 @@ def _changes(path: Path) -> dict[str, str]:
         reader.read_metadata()
     finally:
         reader.close()
+    if reader.object_metadata and not reader.segment:  # npTDMS renamed what _Watch overrides
+        raise InternalError(
+            "npTDMS's TdmsReader no longer merges properties per segment as "
+            "plugins/readers/tdms.py expects; pin npTDMS or update _Watch"
+        )
     return reader.changes
 
 
