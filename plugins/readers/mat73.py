@@ -3,8 +3,9 @@
 A v7.3 file is an HDF5 file behind a 512-byte text header; each top-level
 dataset with a numeric ``MATLAB_class`` attribute is a variable. MATLAB writes
 arrays column-major, so h5py sees them transposed; the longer axis is time
-either way (:func:`~sdt_framework.data.readers.orient`). Structs, cells and
-strings are not signals and are not listed.
+either way (:func:`~sdt_framework.data.readers.orient`); a matrix is noted (in
+MATLAB's row x column order) and a ``logical`` array refused as in :mod:`.mat`.
+Structs, cells and strings are not signals and are not listed.
 """
 
 from __future__ import annotations
@@ -14,15 +15,12 @@ from pathlib import Path
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, orient, pick
+from sdt_framework.data.readers import SignalInfo, as_acquisitions, pick
 from sdt_framework.data.recording import DataFileError
 from sdt_framework.data.tokens import brief
 from sdt_framework.specs import ReaderSpec
 
-from .mat import HDF5_AT_512
-
-NUMERIC = {"double", "single", "int8", "int16", "int32", "int64", "uint8", "uint16", "uint32",
-           "uint64"}  # fmt: skip
+from .mat import HDF5_AT_512, NUMERIC, matlab_signal, typed
 
 
 def _open(path: Path):
@@ -42,20 +40,26 @@ def _class(dataset) -> str:
 
 
 def scan(path: Path) -> list[SignalInfo]:
-    """Every numeric variable of 1 or 2 dimensions (headers only)."""
+    """Every numeric or logical variable of 1 or 2 dimensions (headers only)."""
     import h5py
 
     with _open(path) as handle:
         return [
-            SignalInfo(name, *orient(path, item.shape))
+            matlab_signal(path, name, item.shape[::-1], _class(item))  # MATLAB order
             for name, item in sorted(handle.items())
-            if isinstance(item, h5py.Dataset) and _class(item) in NUMERIC and item.ndim in (1, 2)
+            if isinstance(item, h5py.Dataset)
+            and _class(item) in NUMERIC | {"logical"}
+            and item.ndim in (1, 2)
         ]
 
 
 def probe(path: Path, variable: str | None) -> SignalInfo:
     """The named variable, or the file's only one."""
-    return pick(path, scan(path), variable)
+    infos = scan(path)
+    for info in infos:
+        if info.variable == variable or (variable is None and len(infos) == 1):
+            return typed(info)
+    return pick(path, infos, variable)  # refused, naming what the file holds
 
 
 def read(path: Path, variable: str | None) -> np.ndarray:

@@ -7,19 +7,30 @@ does), so a DAQmx channel scaled to g reads in g and one left in volts says
 ``Volts`` (refused by a manifest, which wants an acceleration). ``wf_start_time``
 is shown by ``sdt dataset inspect``. A file whose last segment is cut short is
 refused, naming how many values the channel should hold and how many it holds.
+
+npTDMS keeps the last value a property is given in any segment and applies it
+to every sample, so a channel whose ``wf_increment``, ``unit_string`` or
+``NI_Scale`` changes between segments after it holds values would read at one
+rate, in one unit, all wrong but the last segment's. The segments' metadata is
+walked once more (:class:`_Watch`, npTDMS's own reader noting each segment's
+properties) and such a channel is refused, naming the property, both values and
+the segment.
 """
 
 from __future__ import annotations
 
 import logging
+import math
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, pick, rate_from_increment
+from sdt_framework.data.readers import SignalInfo, as_acquisitions, increment_rate, pick
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.tokens import brief
+from sdt_framework.data.tokens import brief, quote
+from sdt_framework.errors import InternalError
 from sdt_framework.specs import ReaderSpec
 
 
@@ -39,12 +50,14 @@ def _load(path: Path, group: str | None = None, name: str | None = None):
     log_manager.console_handler.addFilter(catch)
     try:
         if group is None:
-            found = TdmsFile.read_metadata(path)
+            found = (TdmsFile.read_metadata(path), _changes(path))
         else:
             with TdmsFile.open(path) as tdms:
                 found = tdms[group][name][:]
     except OSError as exc:
         raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
+    except InternalError:
+        raise
     except Exception as exc:  # npTDMS raises ValueError, KeyError, struct.error... on bad bytes
         raise DataFileError(
             f"{path}: not a readable TDMS file (npTDMS: {brief(exc)}); a copy cut short?"
@@ -59,28 +72,104 @@ def _load(path: Path, group: str | None = None, name: str | None = None):
     return found
 
 
-def _info(path: Path, group, channel) -> SignalInfo:
+#: channel properties that must hold for every sample: rate, units, scaling
+WATCHED = ("wf_increment", "unit_string", "NI_Number_Of_Scales")
+
+
+def _watched(name: str) -> bool:
+    return name in WATCHED or name.startswith("NI_Scale[")
+
+
+def _same(a: Any, b: Any) -> bool:
+    if isinstance(a, (int, float)) and isinstance(b, (int, float)):
+        return math.isclose(float(a), float(b), rel_tol=1e-9)
+    return bool(a == b)
+
+
+def _shown(value: Any) -> str:
+    return f"{value:.6g}" if isinstance(value, float) else quote(value)
+
+
+def _changes(path: Path) -> dict[str, str]:
+    """{channel path: what changes} for each channel whose rate, units or scaling property
+    takes another value in a later segment, after the channel holds values."""
+    from nptdms.reader import TdmsReader
+
+    class _Watch(TdmsReader):
+        """npTDMS's metadata reader, noting each segment's properties as it merges them."""
+
+        def __init__(self, file: Path) -> None:
+            super().__init__(file)
+            self.segment = 0
+            self.before: dict[str, int] = {}
+            self.seen: dict[tuple[str, str], tuple[Any, int]] = {}
+            self.changes: dict[str, str] = {}
+
+        def _update_object_metadata(self, segment: Any) -> None:
+            self.before = {p: m.num_values for p, m in self.object_metadata.items()}
+            super()._update_object_metadata(segment)
+
+        def _update_object_properties(self, properties: Any) -> None:
+            self.segment += 1
+            for where, items in (properties or {}).items():
+                for name, value in items:
+                    if _watched(name):
+                        self._note(where, name, value)
+            super()._update_object_properties(properties)
+
+        def _note(self, where: str, name: str, value: Any) -> None:
+            old = self.seen.get((where, name))
+            held = self.before.get(where, 0)
+            if old is not None and held and not _same(old[0], value) and where not in self.changes:
+                self.changes[where] = (
+                    f"changes its {name} from {_shown(old[0])} (segment {old[1]}) to "
+                    f"{_shown(value)} at segment {self.segment}, after {held:,} values"
+                )
+            self.seen[(where, name)] = (value, self.segment)
+
+    reader = _Watch(path)
+    try:
+        reader.read_metadata()
+    finally:
+        reader.close()
+    if reader.object_metadata and not reader.segment:  # npTDMS renamed what _Watch overrides
+        raise InternalError(
+            "npTDMS's TdmsReader no longer merges properties per segment as "
+            "plugins/readers/tdms.py expects; pin npTDMS or update _Watch"
+        )
+    return reader.changes
+
+
+def _info(path: Path, group, channel, changes: dict[str, str]) -> SignalInfo:
     props = channel.properties
-    rate = None
+    variable = f"{group.name}/{channel.name}"
+    rate, fault = None, None
     if "wf_increment" in props:
-        rate = rate_from_increment(path, props["wf_increment"], f"channel {channel.name!r} "
-                                   "wf_increment")  # fmt: skip
+        rate, fault = increment_rate(path, props["wf_increment"], f"channel {quote(variable)} "
+                                     "wf_increment")  # fmt: skip
+    if channel.path in changes:
+        fault = (
+            f"{path}: channel {quote(variable)} {changes[channel.path]}; npTDMS applies the "
+            f"last value to every sample, so the channel is not one record; split the file at "
+            f"that segment, or write one rate, unit and scale per channel"
+        )
     start = props.get("wf_start_time")
     return SignalInfo(
-        f"{group.name}/{channel.name}",
+        variable,
         1,
         len(channel),
         rate,
         str(props["unit_string"]) if props.get("unit_string") else None,
         "wf_increment" if rate else "",
         label=f"start {np.datetime_as_string(start, unit='s')}" if start is not None else "",
+        fault=fault,
     )
 
 
 def scan(path: Path) -> list[SignalInfo]:
     """Every channel, from the metadata alone."""
-    tdms = _load(path)
-    return [_info(path, g, c) for g in tdms.groups() for c in g.channels()]
+    tdms, changes = _load(path)
+    return [_info(path, g, c, changes) for g in tdms.groups() for c in g.channels()]
 
 
 def probe(path: Path, variable: str | None) -> SignalInfo:

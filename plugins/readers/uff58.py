@@ -9,6 +9,10 @@ so a manifest rate may differ from it by :data:`UFF_RATE_TOLERANCE`. A
 spectrum, an FRF or unevenly spaced data is refused by name; so is a file
 that does not end with a dataset's closing ``-1`` line (a copy cut short:
 pyuff would silently read only the complete datasets before the cut).
+
+pyuff reads the whole file into memory (about 4 bytes per byte of file,
+measured below), so a file over :data:`UFF_MAX_BYTES`, or one whose parse
+cannot fit in the memory available, is refused before it is read.
 """
 
 from __future__ import annotations
@@ -20,8 +24,9 @@ from typing import Any
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, pick, rate_from_increment
+from sdt_framework.data.readers import SignalInfo, as_acquisitions, increment_rate, pick
 from sdt_framework.data.recording import DataFileError
+from sdt_framework.data.signal_sizes import check_parse_size
 from sdt_framework.data.tokens import brief
 from sdt_framework.specs import ReaderSpec
 
@@ -31,6 +36,11 @@ UFF_RATE_TOLERANCE = 1e-5
 FUNCTION_TYPES = {0: "general", 1: "time response", 2: "auto spectrum", 3: "cross spectrum",
                   4: "frequency response function", 5: "transmissibility", 6: "coherence",
                   9: "power spectral density"}  # fmt: skip
+#: largest UFF file read, bytes: about 35 s (ASCII) and 5 GB of memory for pyuff
+UFF_MAX_BYTES = 1_000_000_000
+#: peak memory of pyuff per byte of file: measured 4.0 (ASCII, 40 MB) and 3.4 (binary 58b,
+#: 44 MB) with ``/usr/bin/time -v`` (2 vCPU, Python 3.11, pyuff 2.4), rounded up
+UFF_PARSE_BYTES_PER_BYTE = 5
 
 
 def _ends_complete(path: Path) -> bool:
@@ -41,12 +51,14 @@ def _ends_complete(path: Path) -> bool:
     return tail.endswith(b"-1") and tail[:-2][-1:] in (b" ", b"\n", b"\r", b"")
 
 
-@functools.lru_cache(maxsize=4)
+@functools.lru_cache(maxsize=1)  # scan, probe and read of one file parse it once
 def _sets(path: str, mtime_ns: int, size: int) -> tuple[tuple[int, ...], tuple[dict, ...]]:
     """(every dataset type, the datasets 58) of a file, read once per version of it."""
     import pyuff
 
     file = Path(path)
+    advice = "export fewer or shorter functions per file (one file per channel or run)"
+    check_parse_size(file, "UFF", UFF_MAX_BYTES, UFF_PARSE_BYTES_PER_BYTE, advice)
     if size == 0 or not _ends_complete(file):
         raise DataFileError(
             f"{file}: truncated: the file does not end with a dataset's closing '-1' line "
@@ -82,24 +94,25 @@ def _units(item: dict[str, Any]) -> str | None:
 
 
 def _info(path: Path, number: int, item: dict[str, Any]) -> SignalInfo:
-    kind = int(item.get("func_type", 0))
-    if kind != 1:
-        raise DataFileError(
-            f"{path}: dataset 58 #{number} is a {FUNCTION_TYPES.get(kind, f'type {kind}')} "
-            f"(function type {kind}), not a time response (type 1); export the time history"
-        )
-    if int(item.get("abscissa_spacing", 1)) != 1:
-        raise DataFileError(f"{path}: dataset 58 #{number} is unevenly spaced; export it evenly")
-    rate = rate_from_increment(path, item.get("abscissa_inc"), f"dataset 58 #{number} abscissa_inc")
     points = int(item.get("num_pts", 0))
     if len(item["data"]) != points:
         raise DataFileError(
             f"{path}: dataset 58 #{number} declares {points:,} points and holds "
             f"{len(item['data']):,}; the file is damaged"
         )
+    rate, fault = increment_rate(path, item.get("abscissa_inc"), f"dataset 58 #{number} "
+                                 "abscissa_inc")  # fmt: skip
+    kind = int(item.get("func_type", 0))
+    if kind != 1:
+        fault = (
+            f"{path}: dataset 58 #{number} is a {FUNCTION_TYPES.get(kind, f'type {kind}')} "
+            f"(function type {kind}), not a time response (type 1); export the time history"
+        )
+    elif int(item.get("abscissa_spacing", 1)) != 1:
+        fault = f"{path}: dataset 58 #{number} is unevenly spaced; export it evenly"
     label = f"{item.get('id1', '')} node {item.get('rsp_node')} dir {item.get('rsp_dir')}"
     return SignalInfo(str(number), 1, points, rate, _units(item), "abscissa_inc",
-                      UFF_RATE_TOLERANCE, label.strip())  # fmt: skip
+                      UFF_RATE_TOLERANCE, label.strip(), fault=fault)  # fmt: skip
 
 
 def scan(path: Path) -> list[SignalInfo]:

@@ -1,6 +1,9 @@
 """WAV files from portable recorders and sound cards (scipy.io.wavfile): integer PCM or float.
 
-The rate is the header's. An integer PCM sample is a count, not an
+The rate is the header's (the ``fmt`` chunk's sample rate), refused outside
+:data:`~sdt_framework.data.readers.RATE_RANGE_HZ` (a header rate of 0 Hz is
+a damaged or wrongly written file). A file cut short, inside its header or
+its data, is refused naming the bytes it holds. An integer PCM sample is a count, not an
 acceleration: the manifest column ``full_scale_g`` (the acceleration, in g,
 of a full-scale sample, from the recorder's calibration) is required and a
 file without it is refused naming the column. A sample is ``count /
@@ -14,13 +17,14 @@ holds. Float WAV samples are taken in the manifest's units, scaled by
 from __future__ import annotations
 
 import math
+import struct
 import warnings
 from pathlib import Path
 
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, pick
+from sdt_framework.data.readers import SignalInfo, as_acquisitions, checked_rate, pick
 from sdt_framework.data.recording import DataFileError
 from sdt_framework.data.tokens import brief, quote
 from sdt_framework.errors import SDTError
@@ -36,11 +40,27 @@ def _load(path: Path) -> tuple[int, np.ndarray]:
             rate, data = scipy.io.wavfile.read(path, mmap=True)
     except OSError as exc:
         raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
-    except (ValueError, EOFError, scipy.io.wavfile.WavFileWarning) as exc:
-        raise DataFileError(
-            f"{path}: not a readable WAV file (scipy: {brief(exc)}); a copy cut short?"
-        ) from None
-    return int(rate), data.reshape(len(data), -1)
+    except (ValueError, EOFError, struct.error, scipy.io.wavfile.WavFileWarning) as exc:
+        raise DataFileError(_unreadable(path, exc)) from None
+    return int(rate), data if data.ndim == 2 else data[:, None]
+
+
+def _unreadable(path: Path, exc: Exception) -> str:
+    """Why scipy could not read the file: cut short (fewer bytes than its RIFF header
+    declares), or what scipy says."""
+    with open(path, "rb") as handle:
+        head = handle.read(12)
+        size = handle.seek(0, 2)
+    if head[:4] in (b"RIFF", b"RIFX") and len(head) >= 8:
+        declared = int.from_bytes(head[4:8], "little" if head[:4] == b"RIFF" else "big") + 8
+        if size < declared:
+            return (
+                f"{path}: truncated: the file holds {size:,} bytes, its RIFF header declares "
+                f"{declared:,}; copy it from the recorder again"
+            )
+    if isinstance(exc, struct.error):  # a header field cut off
+        return f"{path}: truncated: the file ends inside its header ({size:,} bytes)"
+    return f"{path}: not a readable WAV file (scipy: {brief(exc)}); a copy cut short?"
 
 
 def _full_scale(path: Path, data: np.ndarray, full_scale_g: str | float | None) -> float | None:
@@ -66,8 +86,17 @@ def _infos(path: Path, full_scale_g: str | float | None) -> list[SignalInfo]:
     scale = _full_scale(path, data, full_scale_g)
     units = "g" if scale is not None else None
     kind = f"{'float' if data.dtype.kind == 'f' else 'PCM'} {data.dtype.itemsize * 8}-bit"
-    return [SignalInfo(f"ch{i + 1}", 1, data.shape[0], float(rate), units, "header", label=kind)
-            for i in range(data.shape[1])]  # fmt: skip
+    shown, fault = _rate(path, rate)
+    return [SignalInfo(f"ch{i + 1}", 1, data.shape[0], shown, units, "header", label=kind,
+                       fault=fault) for i in range(data.shape[1])]  # fmt: skip
+
+
+def _rate(path: Path, rate: int) -> tuple[float | None, str | None]:
+    return checked_rate(
+        path, float(rate), f"its header's sample rate (fmt chunk) is {rate} Hz",
+        "the header is damaged or was written with a wrong rate; export the file again at "
+        "the recorder's rate",
+    )  # fmt: skip
 
 
 def scan(path: Path, full_scale_g: str | float | None = None) -> list[SignalInfo]:
@@ -80,8 +109,9 @@ def scan(path: Path, full_scale_g: str | float | None = None) -> list[SignalInfo
         rate, data = _load(path)
         note = "integer PCM counts: give full_scale_g to read them in g"
         kind = f"PCM {data.dtype.itemsize * 8}-bit"
-        return [SignalInfo(f"ch{i + 1}", 1, data.shape[0], float(rate), None, "header",
-                           label=kind, note=note) for i in range(data.shape[1])]  # fmt: skip
+        shown, fault = _rate(path, rate)
+        return [SignalInfo(f"ch{i + 1}", 1, data.shape[0], shown, None, "header", label=kind,
+                           note=note, fault=fault) for i in range(data.shape[1])]  # fmt: skip
 
 
 def probe(path: Path, variable: str | None, full_scale_g: str | float | None = None) -> SignalInfo:

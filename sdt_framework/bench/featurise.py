@@ -174,7 +174,10 @@ def _compute(
     shared: SharedPrefix, job: FeatureJob, sensor: SensorSpec, chain_seed: int | None
 ) -> CachedBlock:
     degraded, fs_out = shared.degrade(sensor, seed=chain_seed or 0, noise=chain_seed is not None)
-    table = extract(degraded, fs_out, job.feature_set, window_s=job.window_s, settle_s=job.settle_s)
+    own = "the file's rate (its header's, or the manifest's sampling_rate_hz)"
+    where = own if fs_out == shared.fs else f"{sensor.name}'s output rate"  # for a band error
+    table = extract(degraded, fs_out, job.feature_set, window_s=job.window_s,
+                    settle_s=job.settle_s, label=shared.label, rate_from=where)  # fmt: skip
     at_full_scale = 0
     if sensor.requantise and sensor.full_scale_g is not None:  # clipped samples sit there
         at_full_scale = int(np.count_nonzero(np.abs(degraded) >= sensor.full_scale_g))

@@ -10,8 +10,8 @@ from typing import Annotated
 import typer
 
 from ..errors import SDTError
-from .common import console, err_console, print_json, registry, table
-from .dataset_files import inspect_file, manifest
+from .common import console, err_console, print_json, registry, shorten_labels, table
+from .dataset_files import cell, inspect_file, is_manifest_csv, manifest
 
 MANIFESTS = (".csv", ".parquet", ".toml")
 
@@ -154,8 +154,9 @@ def inspect(
 
     An enDAQ .IDE recording lists its channels instead: subchannels (axes),
     units, the sensor table's parts and the rate measured from the timestamps.
-    Any other signal file (not .csv/.parquet, which are manifests) lists its
-    signals: the manifest 'variable' naming each, rate and units from the file.
+    Any other signal file lists its signals: the manifest 'variable' naming
+    each, rate and units from the file. A .csv is a manifest when its first
+    line names manifest columns (path, condition...), else a signal file.
 
     Example:
 
@@ -192,19 +193,20 @@ def inspect(
             dataset.validate()
     info = dataset.describe()
     for note in dataset.notes:
-        err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
+        err_console.print(f"note: {shorten_labels(note)}", markup=False, highlight=False,
+                          soft_wrap=True)  # fmt: skip
     if as_json:
         print_json(info)
         return
     rows = [
         [
-            r["machine"],
-            r["speed"] or "-",
-            r["condition"],
+            cell(r["machine"]),
+            cell(r["speed"] or "-"),
+            cell(r["condition"]),
             "-" if r["severity"] is None else r["severity"],
-            r["channel"],
-            r["run"],
-            r["recording_id"],
+            cell(r["channel"]),
+            cell(r["run"]),
+            cell(r["recording_id"]),
             r["n_acquisitions"],
             r["samples_per_acquisition"],
             f"{r['sampling_rate_hz']:g}",
@@ -233,15 +235,22 @@ def inspect(
     if info["skipped"]:
         for item in info["skipped"]:
             console.print(
-                f"skipped {item['path']}: {item['reason']}", highlight=False, soft_wrap=True
+                shorten_labels(f"skipped {item['path']}: {item['reason']}"),
+                highlight=False,
+                soft_wrap=True,
             )
-    console.print(dataset.summary_line(), highlight=False, soft_wrap=True)
+    console.print(shorten_labels(dataset.summary_line()), highlight=False, soft_wrap=True)
 
 
 def _is_signal_file(path: str) -> bool:
-    """A file (not a folder, not a manifest or pair file) given to ``inspect``."""
+    """A file (not a folder, not a manifest or pair file) given to ``inspect``; a .csv whose
+    first line names no manifest column is a signal file."""
     candidate = Path(path).expanduser()
-    return candidate.is_file() and candidate.suffix.lower() not in MANIFESTS
+    if not candidate.is_file():
+        return False
+    if candidate.suffix.lower() == ".csv":
+        return not is_manifest_csv(candidate)
+    return candidate.suffix.lower() not in MANIFESTS
 
 
 app.command("manifest")(manifest)

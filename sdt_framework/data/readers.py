@@ -6,8 +6,16 @@ and the rate and units *as the file states them* (None where the format holds
 none: NPY, CSV, MAT). The manifest compares those with its own columns, so a
 rate or unit that disagrees with the file is an error naming both rather than
 a silently wrong benchmark. The helpers here (orientation, real and finite
-samples, unit names, choosing a variable) are the rules every reader applies,
-so that a format added by a plugin behaves like the built-in ones.
+samples, unit names, choosing a variable, the range of rates a file may state)
+are the rules every reader applies, so that a format added by a plugin behaves
+like the built-in ones.
+
+A signal the reader lists but that cannot be read as it stands (a rate outside
+:data:`RATE_RANGE_HZ`, a rate or unit that changes within the channel, no
+samples) carries its ``fault``: ``sdt dataset inspect`` lists it with a
+warning (a slow temperature channel does not hide the accelerometers beside
+it), and :func:`pick`, through which every ``probe`` and ``read`` goes, refuses
+it with that one line.
 """
 
 from __future__ import annotations
@@ -25,10 +33,14 @@ from .tokens import quote
 
 __all__ = [
     "HEADER_RATE_TOLERANCE",
+    "RATE_RANGE_HZ",
     "SignalInfo",
     "acceleration_units",
     "as_acquisitions",
+    "checked_rate",
+    "fault_of",
     "finite",
+    "increment_rate",
     "names",
     "orient",
     "pick",
@@ -38,6 +50,9 @@ __all__ = [
 
 #: relative difference tolerated between a manifest rate and one a file's header states
 HEADER_RATE_TOLERANCE = 1e-6
+#: rates a file may state, Hz: the first third-octave band (10 Hz) needs 25 Hz; no
+#: accelerometer DAQ samples above 10 MHz (the twin's pairs are held to the same range)
+RATE_RANGE_HZ = (25.0, 1e7)
 
 #: the spellings of acceleration units found in DAQ files -> the manifest's unit names
 _UNIT_SPELLINGS = {
@@ -65,6 +80,8 @@ class SignalInfo:
     when it holds none); ``rate_from`` names the field they came from
     (``wf_increment``, ``Delta_X``, ``header``, ``timestamps``) and
     ``rate_tolerance`` the relative difference a manifest may have from it.
+    ``fault`` is why the signal cannot be read as it stands (one line naming the
+    file and the field), None when it can.
     """
 
     variable: str | None
@@ -76,6 +93,7 @@ class SignalInfo:
     rate_tolerance: float = HEADER_RATE_TOLERANCE
     label: str = ""
     note: str | None = None
+    fault: str | None = None
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -101,18 +119,52 @@ def acceleration_units(units: str | None) -> str | None:
     return _UNIT_SPELLINGS.get(key)
 
 
-def rate_from_increment(file: Path, increment: Any, field: str) -> float:
-    """1 / ``increment``, refusing a missing, zero, negative or non-finite increment by name."""
+def checked_rate(file: Path, rate: float, stated: str, fix: str) -> tuple[float | None, str | None]:
+    """(rate, None) for a rate within :data:`RATE_RANGE_HZ`; else (the rate, or None when not
+    positive, and why). ``stated`` says where it comes from (``its header's sample rate is
+    0 Hz``), ``fix`` what to do."""
+    lo, hi = RATE_RANGE_HZ
+    if math.isfinite(rate) and lo <= rate <= hi:
+        return rate, None
+    shown = rate if math.isfinite(rate) and rate > 0 else None
+    return shown, (
+        f"{file}: {stated}, outside {lo:g} Hz to {hi / 1e6:g} MHz, the rates sdt reads; {fix}"
+    )
+
+
+def increment_rate(file: Path, increment: Any, field: str) -> tuple[float | None, str | None]:
+    """(1 / ``increment``, None), or (None or the rate, why) for a missing, zero, negative or
+    non-finite increment, or one whose rate is outside :data:`RATE_RANGE_HZ`."""
     try:
         value = float(increment)
     except (TypeError, ValueError):
         value = math.nan
     if not (math.isfinite(value) and value > 0):
-        raise DataFileError(
+        return None, (
             f"{file}: its {field} is {quote(str(increment))}, not a positive time step, so the "
             f"sampling rate cannot be read from it"
         )
-    return 1.0 / value
+    stated = f"its {field} is {value:.6g} s, a rate of {1.0 / value:.6g} Hz"
+    return checked_rate(file, 1.0 / value, stated, "check that field (a time step in seconds)")
+
+
+def rate_from_increment(file: Path, increment: Any, field: str) -> float:
+    """1 / ``increment``; a missing, zero, negative or non-finite increment, or a rate outside
+    :data:`RATE_RANGE_HZ`, is refused by name (:func:`increment_rate` for a per-signal fault)."""
+    rate, fault = increment_rate(file, increment, field)
+    if fault is not None or rate is None:
+        raise DataFileError(fault or f"{file}: no rate in its {field}")
+    return rate
+
+
+def fault_of(file: Path, info: SignalInfo) -> str | None:
+    """Why ``info`` cannot be read: its reader's ``fault``, or no samples at all."""
+    if info.fault:
+        return info.fault
+    if info.n_samples == 0 or info.n_acquisitions == 0:
+        name = "its signal" if info.variable is None else f"signal {quote(info.variable)}"
+        return f"{file}: {name} holds no samples (an empty recording); give a file with data"
+    return None
 
 
 def names(found: list[str]) -> str:
@@ -121,19 +173,27 @@ def names(found: list[str]) -> str:
 
 
 def pick(file: Path, infos: list[SignalInfo], variable: str | None) -> SignalInfo:
-    """The signal a manifest row names: ``variable``, or the file's only signal."""
+    """The signal a manifest row names: ``variable``, or the file's only signal; a signal with a
+    fault (:func:`fault_of`) is refused with it."""
     if variable is None:
         if len(infos) == 1:
-            return infos[0]
+            return _usable(file, infos[0])
         if not infos:
             raise DataFileError(f"{file}: holds no signal to read")
         found = [str(i.variable) for i in infos]
         raise DataFileError(f"{file}: holds signals {names(found)}; name one in 'variable'")
     for info in infos:
         if info.variable == variable:
-            return info
+            return _usable(file, info)
     found = [str(i.variable) for i in infos]
     raise DataFileError(f"{file}: no signal {quote(variable)}; it holds {names(found)}")
+
+
+def _usable(file: Path, info: SignalInfo) -> SignalInfo:
+    fault = fault_of(file, info)
+    if fault:
+        raise DataFileError(fault)
+    return info
 
 
 def orient(file: Path, shape: tuple[int, ...]) -> tuple[int, int]:

@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 
 from ..reader_table import reader_table
-from .readers import SignalInfo
+from .readers import SignalInfo, fault_of
 from .recording import DataFileError
 from .tokens import brief
 
@@ -93,9 +93,15 @@ def reader_for(file: str | Path, readers: Sequence[Any] | None = None) -> Any:
 def scan_file(
     file: str | Path, readers: Sequence[Any] | None = None, **options: Any
 ) -> tuple[Any, list[SignalInfo]]:
-    """(reader, every signal of ``file``) for ``sdt dataset inspect FILE``."""
+    """(reader, every signal of ``file``) for ``sdt dataset inspect FILE``; a file none of
+    whose signals can be read (each has a fault: a header rate of 0 Hz, no samples) is
+    refused with the first signal's fault."""
     reader = reader_for(file, readers)
-    return reader, list(reader.scan(Path(file), **options))
+    infos = list(reader.scan(Path(file), **options))
+    faults = [fault_of(Path(file), info) for info in infos]
+    if infos and all(faults):
+        raise DataFileError(str(faults[0]))
+    return reader, infos
 
 
 def probe_signal(

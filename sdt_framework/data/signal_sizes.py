@@ -28,6 +28,13 @@ on a 20 000-sample file, 170-220 MB) on the reference machine (2 vCPU, Python
 
 Each constant is the largest measured, rounded up by 10-30 %: the estimate
 errs on the high side, by about that much.
+
+Text formats that a library parses whole (LabVIEW LVM through lvm_read, UFF
+through pyuff) are sized before they are parsed, in ``sdt dataset inspect``,
+``sdt dataset manifest`` and every read: :func:`check_parse_size` refuses a
+file over its format's stated bound, or one whose parse (the reader's measured
+bytes of memory per byte of file) cannot fit in the memory available, naming
+the size and what to do instead.
 """
 
 from __future__ import annotations
@@ -39,12 +46,16 @@ from pathlib import Path
 
 import numpy as np
 
+from .recording import DataFileError
+from .sizes import available_memory, human_bytes
+
 __all__ = [
     "CSV_PARSE_BYTES_PER_SAMPLE",
     "DEGRADE_BYTES_PER_SAMPLE",
     "FEATURES_BYTES_PER_SAMPLE",
     "TWIN_BYTES_PER_IDE_BYTE",
     "TWIN_BYTES_PER_SAMPLE",
+    "check_parse_size",
     "file_samples",
 ]
 
@@ -137,3 +148,28 @@ def file_samples(path: str | os.PathLike[str], variable: str | None = None) -> i
     except (OSError, ValueError, EOFError, TypeError, NotImplementedError):
         return None
     return None
+
+
+def check_parse_size(path: Path, fmt: str, limit: int, bytes_per_byte: float, advice: str) -> int:
+    """The size of ``path``, a ``fmt`` text file parsed whole, when it is at most ``limit``
+    bytes and its parse (``bytes_per_byte`` of memory per byte) fits in the memory
+    available; else a one-line refusal naming the size and ``advice``."""
+    try:
+        size = path.stat().st_size
+    except OSError as exc:
+        raise DataFileError(f"{path}: cannot read ({exc.strerror or exc})") from None
+    if size > limit:
+        raise DataFileError(
+            f"{path}: a {human_bytes(size)} {fmt} file; sdt parses {fmt} text files up to "
+            f"{human_bytes(limit)} (their reader holds the whole file as Python objects); "
+            f"{advice}"
+        )
+    need = size * bytes_per_byte
+    room = available_memory()
+    if need > room:
+        raise DataFileError(
+            f"{path}: parsing this {human_bytes(size)} {fmt} file needs about "
+            f"{human_bytes(need)} of memory, more than the {human_bytes(room)} available; "
+            f"{advice}"
+        )
+    return size

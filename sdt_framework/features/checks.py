@@ -47,8 +47,15 @@ def check_signal(x: object) -> np.ndarray:
     return array
 
 
-def check_bands(spec: FeatureSetSpec, fs: float, window_length: int) -> None:
-    """Refuse a rate at which a band of ``spec`` holds no FFT bin of a window.
+#: where a rate comes from, when the caller does not say: the command's option
+RATE_GIVEN = "the sampling rate given (--fs)"
+
+
+def check_bands(
+    spec: FeatureSetSpec, fs: float, window_length: int, rate_from: str = RATE_GIVEN
+) -> None:
+    """Refuse a rate at which a band of ``spec`` holds no FFT bin of a window; ``rate_from``
+    says where the rate came from (an option, a file's header, a sensor's output rate).
 
     The bins are those of a real FFT of ``window_length`` samples at ``fs``
     (k fs / N, 0 <= k <= N/2); a band [low, high] keeps the bins with
@@ -74,7 +81,7 @@ def check_bands(spec: FeatureSetSpec, fs: float, window_length: int) -> None:
             f"feature set {spec.name!r}: the band {band.describe()} of "
             f"{', '.join(band.features)} holds no FFT bin at fs={fs:g} Hz (Nyquist {fs / 2:g} Hz, "
             f"{window_length}-sample windows), so those features would be 0; {fix} "
-            f"(docs/features.md, Windows); check the sampling rate given (--fs)"
+            f"(docs/features.md, Windows); check {rate_from}"
         )
 
 

@@ -18,7 +18,7 @@ import numpy as np
 from ..arguments import check_rate, check_spec
 from ..errors import SDTError
 from ..specs import FeatureSetSpec
-from .checks import check_bands, check_feature_output, check_signal
+from .checks import RATE_GIVEN, check_bands, check_feature_output, check_signal
 from .table import FeatureTable
 from .windowing import SETTLE_S, WINDOW_S, cut_windows
 
@@ -53,7 +53,9 @@ class FeatureExtractor:
         """The domain part: the feature set's compute on centred float64 windows."""
         return self.feature_set.compute(windows, fs)
 
-    def extract(self, x: np.ndarray, fs: float, *, label: str = "") -> FeatureTable:
+    def extract(
+        self, x: np.ndarray, fs: float, *, label: str = "", rate_from: str = RATE_GIVEN
+    ) -> FeatureTable:
         """Features of every window of ``x``.
 
         Parameters
@@ -66,7 +68,11 @@ class FeatureExtractor:
             Sampling rate, Hz.
         label
             The signal's name (its file), put before a message about the signal
-            (a NaN, too short for one window) so the error names it.
+            (a NaN, too short for one window, a rate too low for a band) so the
+            error names it.
+        rate_from
+            Where ``fs`` came from, for the message of a rate too low for a band
+            (default: the ``--fs`` option).
 
         Returns
         -------
@@ -85,11 +91,11 @@ class FeatureExtractor:
         try:
             signal = check_signal(x)
             cut = cut_windows(signal, fs, window_s=self.window_s, settle_s=self.settle_s)
+            check_bands(self.feature_set, fs, cut.length, rate_from)
         except SDTError as exc:
             if not label:
                 raise
             raise type(exc)(f"{label}: {exc}") from None
-        check_bands(self.feature_set, fs, cut.length)
         # One vectorised pass: float64 copy, each window minus its own mean.
         centred = cut.data - cut.data.mean(axis=1, keepdims=True, dtype=np.float64)
         try:
@@ -121,6 +127,7 @@ def extract(
     window_s: float = WINDOW_S,
     settle_s: float = SETTLE_S,
     label: str = "",
+    rate_from: str = RATE_GIVEN,
 ) -> FeatureTable:
     """Extract ``feature_set`` from every window of ``x``; see :class:`FeatureExtractor`.
 
@@ -130,4 +137,4 @@ def extract(
     >>> table.to_frame().head()  # doctest: +SKIP
     """
     extractor = FeatureExtractor(feature_set, window_s=window_s, settle_s=settle_s)
-    return extractor.extract(x, fs, label=label)
+    return extractor.extract(x, fs, label=label, rate_from=rate_from)

@@ -12,6 +12,7 @@ from __future__ import annotations
 import os
 
 from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
+from ..data.readers import RATE_RANGE_HZ
 from ..errors import SDTError
 from ..inputs import require_regular_file
 from .pair_toml import is_pair_toml, load_toml_pair
@@ -89,8 +90,6 @@ def load_pair(
     )
 
 
-#: the rates a pair's signals may have: the first third-octave band (10 Hz) needs 25 Hz
-RATE_RANGE_HZ = (25.0, 1e7)
 #: the two sides of one recording last about as long: a larger ratio is a unit mistake
 DURATION_RATIO = 10.0
 

@@ -104,6 +104,7 @@ def test_cli_refuses_the_rate_and_writes_nothing(tmp_path: Path, monkeypatch, ca
         main()
     assert info.value.code == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and err.startswith("error: feature set 'paper8': the band 10 Hz")
+    start = f"error: {tmp_path / 'slow.npy'}: feature set 'paper8': the band 10 Hz"
+    assert err.count("\n") == 1 and err.startswith(start)
     assert "fs=15 Hz" in err and "(--fs)" in err
     assert not out.exists()
