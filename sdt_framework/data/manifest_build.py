@@ -183,8 +183,8 @@ def build_manifest(
                 infos = reader.scan(file, **options)
                 for info in infos:  # a probe refuses what the row could not read
                     reader.probe(file, info.variable, **options)
-        except SDTError as exc:
-            built.unmatched.append((relative.as_posix(), str(exc)))
+        except SDTError as exc:  # the reason without the file's path, which the line names
+            built.unmatched.append((relative.as_posix(), str(exc).removeprefix(f"{file}: ")))
             continue
         if rate_hz is None and any(info.rate_hz is None for info in infos):
             why = f"a {reader.label} file holds no rate; give --rate-hz"
