@@ -13,17 +13,13 @@ import pytest
 
 from sdt_framework.severity import load_zone_file
 
-TABLE = """
-[[table]]
-name = "plant-p101"
-title = "Plant limits for P-101"
-machine_group = "plant"
-unit = "mm/s"
-document = "plant standard PS-12"
-edition = "rev. 3"
-table_ref = "table 2"
-{band}boundaries = {{ a_b = {a_b}, b_c = {b_c}, c_d = 5 }}
-"""
+from ..severity.test_severity_tables import GOOD  # boundaries a_b 1.0, b_c 2.0, c_d 5.0
+
+
+def _table(a_b: object, b_c: object, band: str = "") -> str:
+    """GOOD with these boundaries (and a band line), c_d an integer."""
+    line = f"{band}boundaries = {{ a_b = {a_b}, b_c = {b_c}, c_d = 5 }}"
+    return GOOD.replace("boundaries = { a_b = 1.0, b_c = 2.0, c_d = 5.0 }", line)
 
 
 @pytest.mark.parametrize(
@@ -44,7 +40,7 @@ table_ref = "table 2"
 )
 def test_a_boundary_that_is_not_a_number_is_one_line(sdt, tmp_path, a_b, b_c, band, field, words):
     path = tmp_path / "plant.toml"
-    path.write_text(TABLE.format(a_b=a_b, b_c=b_c, band=band), encoding="utf-8")
+    path.write_text(_table(a_b, b_c, band), encoding="utf-8")
     done = sdt("compare", str(tmp_path / "no-results"), "--zones", str(path))
     assert done.returncode == 2 and done.stdout == ""
     assert done.stderr == f"error: {path}: field {field!r}: must be a number, {words}\n"
@@ -52,6 +48,6 @@ def test_a_boundary_that_is_not_a_number_is_one_line(sdt, tmp_path, a_b, b_c, ba
 
 def test_integers_are_numbers(tmp_path):
     path = tmp_path / "plant.toml"
-    path.write_text(TABLE.format(a_b=1, b_c=2, band="band_hz = [10, 1000]\n"), encoding="utf-8")
+    path.write_text(_table(1, 2, "band_hz = [10, 1000]\n"), encoding="utf-8")
     (table,) = load_zone_file(path)
     assert table.cuts.tolist() == [1.0, 2.0, 5.0] and table.band_hz == (10.0, 1000.0)
