@@ -6,6 +6,11 @@ never leaves a half-written file behind. An OS error while writing (disk full,
 read-only folder, a file where a folder should be) removes the temporary file
 and becomes an :class:`OutputError`: one line naming the path and what to do,
 still an ``OSError`` for callers that tolerate a failed write (a cache).
+
+A writer whose file name comes from data (a figure named after a machine)
+passes ``root``, the folder the user named: a destination that resolves
+outside it (``..``, an absolute name, a symbolic link below ``root`` leading
+out) is refused before any folder is created.
 """
 
 from __future__ import annotations
@@ -25,6 +30,7 @@ __all__ = [
     "atomic_write_bytes",
     "atomic_write_text",
     "ensure_writable_dir",
+    "inside",
     "os_error_hint",
 ]
 
@@ -55,17 +61,43 @@ def _ours(exc: OSError, *paths: Path) -> bool:
     return exc.filename is None or Path(exc.filename) in paths
 
 
-@contextlib.contextmanager
-def atomic_path(destination: str | os.PathLike[str]) -> Iterator[Path]:
-    """Yield a temporary path beside ``destination``; rename it there on success.
+def inside(root: str | os.PathLike[str], destination: str | os.PathLike[str]) -> Path:
+    """``destination`` if it resolves to a path strictly inside the folder ``root``.
+
+    Both are resolved (symbolic links followed, ``..`` removed), so a name
+    holding ``../`` or a link below ``root`` pointing elsewhere cannot lead out.
 
     Raises
     ------
     OutputError
-        When the folder cannot be created or the file cannot be written; the
-        temporary file is removed and ``destination`` is left as it was.
+        When it would not lie inside ``root``.
     """
     destination = Path(destination)
+    base, target = Path(root).resolve(), destination.resolve()
+    if target == base or not target.is_relative_to(base):
+        raise OutputError(
+            f"refusing to write {destination}: it resolves to {target}, outside the output "
+            f"folder {base}; a file name must not lead out of the folder it is written to"
+        )
+    return destination
+
+
+@contextlib.contextmanager
+def atomic_path(
+    destination: str | os.PathLike[str], *, root: str | os.PathLike[str] | None = None
+) -> Iterator[Path]:
+    """Yield a temporary path beside ``destination``; rename it there on success.
+
+    With ``root``, ``destination`` must resolve inside that folder (:func:`inside`).
+
+    Raises
+    ------
+    OutputError
+        When ``destination`` is outside ``root``, or the folder cannot be
+        created or the file cannot be written; the temporary file is removed
+        and ``destination`` is left as it was.
+    """
+    destination = Path(destination) if root is None else inside(root, destination)
     try:
         destination.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(
@@ -90,15 +122,19 @@ def atomic_path(destination: str | os.PathLike[str]) -> Iterator[Path]:
         tmp_path.unlink(missing_ok=True)
 
 
-def atomic_write_bytes(destination: str | os.PathLike[str], data: bytes) -> None:
-    """Write ``data`` to ``destination`` atomically."""
-    with atomic_path(destination) as tmp:
+def atomic_write_bytes(
+    destination: str | os.PathLike[str], data: bytes, *, root: str | os.PathLike[str] | None = None
+) -> None:
+    """Write ``data`` to ``destination`` atomically (inside ``root``, if given)."""
+    with atomic_path(destination, root=root) as tmp:
         tmp.write_bytes(data)
 
 
-def atomic_write_text(destination: str | os.PathLike[str], text: str) -> None:
-    """Write UTF-8 ``text`` to ``destination`` atomically."""
-    atomic_write_bytes(destination, text.encode("utf-8"))
+def atomic_write_text(
+    destination: str | os.PathLike[str], text: str, *, root: str | os.PathLike[str] | None = None
+) -> None:
+    """Write UTF-8 ``text`` to ``destination`` atomically (inside ``root``, if given)."""
+    atomic_write_bytes(destination, text.encode("utf-8"), root=root)
 
 
 def ensure_writable_dir(path: str | os.PathLike[str], what: str, option: str) -> Path:

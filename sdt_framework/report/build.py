@@ -12,7 +12,7 @@ from ..errors import SDTError
 from ..io import atomic_write_text
 from .decision import decision_blocks
 from .deployment import deployment_blocks
-from .document import Block, Code, Heading, Items, Paragraph, Table
+from .document import Block, Code, Heading, Items, Paragraph, Table, code, literal
 from .edge import edge_blocks
 from .exploration import exploration_blocks
 from .figures import draw_figures
@@ -45,17 +45,24 @@ CAPTIONS = {
 }
 
 
+def _dataset(folder: ResultsFolder) -> str:
+    summary, res = folder.summary or {}, folder.results
+    if "dataset" in summary:
+        return str(summary["dataset"])
+    return str(res["dataset"].iloc[0]) if len(res) and "dataset" in res else "?"
+
+
 def _overview(folder: ResultsFolder) -> list[Block]:
-    res, summary = folder.results, folder.summary or {}
+    res = folder.results
     blocks: list[Block] = [
-        Heading(f"Benchmark report: {folder.path.name}", 1),
+        Heading(f"Benchmark report: {literal(folder.path.name)}", 1),
         Paragraph(
-            f"Dataset **{summary.get('dataset', res['dataset'].iloc[0] if len(res) else '?')}**; "
+            f"Dataset **{literal(_dataset(folder))}**; "
             f"{len(res)} runs ({len(folder.ok)} ok, {len(folder.failed)} failed) over "
             f"{res['machine'].nunique()} machine(s), {res['scenario'].nunique()} scenario(s), "
-            f"{len(folder.sensors)} sensor(s) ({', '.join(folder.sensors)}), "
+            f"{len(folder.sensors)} sensor(s) ({', '.join(map(literal, folder.sensors))}), "
             f"{res['classifier'].nunique()} classifier(s). Reference sensor: "
-            f"`{folder.reference}`."
+            f"{code(folder.reference)}."
         ),
     ]
     if folder.problems:
@@ -64,7 +71,7 @@ def _overview(folder: ResultsFolder) -> list[Block]:
                 "**Missing or unreadable inputs** (parts of the report that need "
                 "them are left out):"
             ),
-            Items(tuple(folder.problems)),
+            Items(tuple(map(literal, folder.problems))),
         ]
     return blocks
 
@@ -75,13 +82,16 @@ def _provenance(folder: ResultsFolder) -> list[Block]:
     if folder.allocation is not None and not folder.allocation.empty:
         blocks += [Heading("Train/test allocation", 3), allocation_table(folder.allocation)]
     if folder.skipped is not None and not folder.skipped.empty:
-        rows = tuple(tuple(str(v) for v in r) for r in folder.skipped.itertuples(index=False))
+        rows = tuple(tuple(map(literal, r)) for r in folder.skipped.itertuples(index=False))
         blocks += [
             Heading("Skipped machine/scenario pairs", 3),
-            Table(tuple(folder.skipped.columns), rows),
+            Table(tuple(map(literal, folder.skipped.columns)), rows),
         ]
     if summary.get("dataset_skipped"):
-        items = tuple(f"{s.get('path')}: {s.get('reason')}" for s in summary["dataset_skipped"])
+        items = tuple(
+            f"{literal(s.get('path'))}: {literal(s.get('reason'))}"
+            for s in summary["dataset_skipped"]
+        )
         blocks += [Heading("Dataset entries skipped", 3), Items(items)]
     blocks.append(Heading("Configuration (config.toml)", 3))
     blocks.append(
@@ -91,7 +101,7 @@ def _provenance(folder: ResultsFolder) -> list[Block]:
     )
     if summary:
         seconds = summary.get("seconds", {})
-        timing = tuple((k, f"{float(v):.1f}") for k, v in seconds.items())
+        timing = tuple((literal(k), f"{float(v):.1f}") for k, v in seconds.items())
         total = ("total", f"{sum(seconds.values()):.1f}")
         blocks += [Heading("Timing", 3), Table(("stage", "seconds"), (*timing, total))]
         counts = [
@@ -105,11 +115,15 @@ def _provenance(folder: ResultsFolder) -> list[Block]:
             if k in summary
         ]
         if counts:
-            blocks.append(Items(tuple(f"{k.replace('_', ' ')}: {summary[k]}" for k in counts)))
+            blocks.append(
+                Items(tuple(f"{k.replace('_', ' ')}: {literal(summary[k])}" for k in counts))
+            )
         software = summary.get("software", {})
         blocks += [
             Heading("Software", 3),
-            Table(("package", "version"), tuple((k, str(v)) for k, v in software.items())),
+            Table(
+                ("package", "version"), tuple((literal(k), literal(v)) for k, v in software.items())
+            ),
         ]
     return blocks
 
@@ -119,11 +133,13 @@ def _saturation(folder: ResultsFolder) -> list[Block]:
     entries = (folder.summary or {}).get("saturation", {})
     rows = tuple(
         (
-            sensor,
+            literal(sensor),
             f"+-{entry['full_scale_g']:g} g",
             f"{entry['fraction']:.2%}",
             f"{entry['recordings_above_limit']} of {entry['recordings']}",
-            ", ".join(f"{w['recording_id']} ({w['fraction']:.0%})" for w in entry["worst"]),
+            ", ".join(
+                f"{literal(w['recording_id'])} ({w['fraction']:.0%})" for w in entry["worst"]
+            ),
         )
         for sensor, entry in entries.items()
         if entry.get("recordings_above_limit")
@@ -153,10 +169,12 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
         table4_table(folder.results, folder.sensors),
     ]
     delta = delta_table(folder.results, folder.sensors, folder.reference)
-    blocks.append(Heading(f"Delta to the reference ({folder.reference})", 2))
+    blocks.append(Heading(f"Delta to the reference ({literal(folder.reference)})", 2))
     note = missing_reference_note(folder)
     if delta is None or note is not None:
-        text = note or f"Not shown: the reference sensor {folder.reference} has no successful run."
+        text = note or (
+            f"Not shown: the reference sensor {literal(folder.reference)} has no successful run."
+        )
         blocks.append(Paragraph(text))
     else:
         blocks.append(delta)
@@ -166,7 +184,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
     blocks += severity_blocks(folder, registry, figures_dir, colors)
     blocks += unit_blocks(folder)
     blocks += deployment_blocks(folder, registry)
-    blocks += exploration_blocks(folder.path)
+    blocks += exploration_blocks(folder.path, figures_dir)
     blocks += edge_blocks(folder, registry)
     blocks += node_blocks(folder, registry)
     blocks.append(Heading("Figures", 2))
@@ -222,9 +240,9 @@ def write_report(
     written: dict[str, Path] = {}
     if "md" in formats:
         written["md"] = target / "report.md"
-        atomic_write_text(written["md"], render_markdown(blocks, target))
+        atomic_write_text(written["md"], render_markdown(blocks, target), root=target)
     if "html" in formats:
         written["html"] = target / "report.html"
-        title = f"sdt-framework report: {folder.path.name}"
-        atomic_write_text(written["html"], render_html(blocks, title))
+        title = f"sdt-framework report: {literal(folder.path.name)}"
+        atomic_write_text(written["html"], render_html(blocks, title), root=target)
     return written

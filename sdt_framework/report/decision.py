@@ -17,7 +17,7 @@ import numpy as np
 from ..edge import report_bytes
 from ..errors import SDTError
 from ..features import resolve_feature_set
-from .document import Block, Heading, Paragraph, Table
+from .document import Block, Heading, Paragraph, Table, code, literal
 from .load import ResultsFolder
 from .node_edge import BATTERY, life_cell, node_budgets
 from .severity import folder_agreement
@@ -38,7 +38,7 @@ def _losses(folder: ResultsFolder, margin: float) -> dict[str, str]:
     for row in overall.itertuples():
         low, high = row.ci_low, row.ci_high
         interval = "" if np.isnan(low) else f" [{low:+.3f}, {high:+.3f}]"
-        out[row.candidate] = f"{row.delta:+.3f}{interval} **{row.label}**"
+        out[row.candidate] = f"{row.delta:+.3f}{interval} **{literal(row.label)}**"
     return out
 
 
@@ -51,9 +51,10 @@ def _price(registry: Any, name: str) -> str:
             continue
         if part.price is None:
             searched = part.no_price
-            return "no public price" + ("" if searched is None else f" (searched {searched.date})")
+            when = "" if searched is None else f" (searched {literal(searched.date)})"
+            return "no public price" + when
         p = part.price
-        return f"{p.amount:g} {p.currency}{label}; {p.source}, {p.date}"
+        return literal(f"{p.amount:g} {p.currency}{label}; {p.source}, {p.date}")
     return "no public price"
 
 
@@ -84,7 +85,7 @@ def _zones(folder: ResultsFolder) -> dict[str, str]:
     keep = zones[pooled | ~has_pooled]  # one channel: no "all" row, its own row
     out: dict[str, list[str]] = {}
     for r in keep.sort_values(["sensor", "machine"]).itertuples():
-        out.setdefault(r.sensor, []).append(f"{r.machine} {100 * r.share_same:.1f} %")
+        out.setdefault(r.sensor, []).append(f"{literal(r.machine)} {100 * r.share_same:.1f} %")
     return {sensor: "; ".join(parts) for sensor, parts in out.items()}
 
 
@@ -99,12 +100,12 @@ def decision_blocks(folder: ResultsFolder, registry: Any, margin: float = 0.02) 
         payload = report_bytes(spec, 3, config.feature_dtype)
         lives = node_budgets(folder, registry)
     except SDTError as exc:
-        return [*blocks, Paragraph(f"Not shown: {exc}")]
+        return [*blocks, Paragraph(f"Not shown: {literal(exc)}")]
     losses = _losses(folder, margin)
     zones = _zones(folder)
     rows = tuple(
         (
-            name,
+            literal(name),
             losses.get(name, "-"),
             _price(registry, name),
             _current(registry, name),
@@ -117,7 +118,7 @@ def decision_blocks(folder: ResultsFolder, registry: Any, margin: float = 0.02) 
     )
     blocks.append(
         Paragraph(
-            f"One row per candidate. Δ Macro F1 against the reference `{folder.reference}` "
+            f"One row per candidate. Δ Macro F1 against the reference {code(folder.reference)} "
             f"over all runs, with its 95 % interval and the verdict at ±{margin:g} (see "
             f"Verdict); indicative unit price with its source and date where one is public; "
             f"supply current while measuring (datasheet); application payload of one report "

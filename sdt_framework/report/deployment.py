@@ -22,7 +22,7 @@ from scipy import stats
 from ..bench.results import SCENARIO_TITLES
 from ..errors import SDTError
 from ..features import resolve_feature_set
-from .document import Block, Heading, Paragraph, Table
+from .document import Block, Heading, Paragraph, Table, literal
 from .load import ResultsFolder
 
 __all__ = ["deployment_blocks", "mean_ci"]
@@ -88,11 +88,13 @@ def _transfer(ok: pd.DataFrame, order: list[str]) -> list[Block]:
     ]
     for scenario, part in _by_scenario(channels):
         rows = tuple(
-            (train, *(_cell(part[(part["train_sensor"] == train) & (part["test_sensor"] == t)])
-                      for t in tests))
+            (literal(train),
+             *(_cell(part[(part["train_sensor"] == train) & (part["test_sensor"] == t)])
+               for t in tests))
             for train in trains
         )  # fmt: skip
-        blocks += [Paragraph(f"**{scenario}**"), Table(("train \\ test", *tests), rows)]
+        header = ("train \\ test", *map(literal, tests))
+        blocks += [Paragraph(f"**{literal(scenario)}**"), Table(header, rows)]
     return blocks
 
 
@@ -116,11 +118,9 @@ def _nodes(ok: pd.DataFrame, order: list[str], node_bytes: str) -> list[Block]:
             mine = part[part["test_sensor"] == sensor]
             cells = [_cell(mine[mine["node"].isna()])]
             cells += [_cell(mine[mine["node"] == node]) for node in nodes]
-            rows.append((sensor, *cells))
-        blocks += [
-            Paragraph(f"**{scenario}**"),
-            Table(("sensor", "per channel", *_node_headers(nodes)), tuple(rows)),
-        ]
+            rows.append((literal(sensor), *cells))
+        header = ("sensor", "per channel", *map(literal, _node_headers(nodes)))
+        blocks += [Paragraph(f"**{literal(scenario)}**"), Table(header, tuple(rows))]
     return blocks
 
 

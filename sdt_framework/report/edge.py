@@ -14,7 +14,7 @@ from ..edge import edge_budget
 from ..edge.table import budget_rows, budget_summary
 from ..errors import SDTError
 from ..features import resolve_feature_set
-from .document import Block, Heading, Paragraph, Table
+from .document import Block, Heading, Paragraph, Table, literal
 from .load import ResultsFolder
 
 __all__ = ["AXES", "INTERVAL_S", "REGIONS", "edge_blocks"]
@@ -38,7 +38,7 @@ def edge_blocks(folder: ResultsFolder, registry: Any) -> list[Block]:
     try:
         spec = resolve_feature_set(registry, config.features)
     except SDTError as exc:
-        return [*blocks, Paragraph(f"Not shown: {exc}")]
+        return [*blocks, Paragraph(f"Not shown: {literal(exc)}")]
     dtype = config.feature_dtype
     blocks.append(
         Paragraph(
@@ -58,7 +58,11 @@ def edge_blocks(folder: ResultsFolder, registry: Any) -> list[Block]:
         columns, rows = budget_rows(budget)
         blocks += [
             Heading(region, 3),
-            Table(tuple(columns), tuple(tuple(r) for r in rows), budget_summary(budget)),
+            Table(
+                tuple(map(literal, columns)),
+                tuple(tuple(map(literal, r)) for r in rows),
+                literal(budget_summary(budget)),
+            ),
         ]
     current = budgets[REGIONS[0]]
     other = "float32" if current.dtypes == ("float16",) else "float16"

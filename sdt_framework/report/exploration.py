@@ -17,8 +17,8 @@ import pandas as pd
 
 from ..csv_cells import unescape_frame
 from ..explore.designs import DESIGNS
-from .document import Block, Figure, Heading, Paragraph, Table
-from .style import new_figure, save_figure
+from .document import Block, Figure, Heading, Paragraph, Table, literal
+from .style import figure_label, new_figure, save_figure
 
 __all__ = ["exploration_blocks"]
 
@@ -77,7 +77,7 @@ def _fig_effects(effects: pd.DataFrame, out: Path) -> Path:
         ax.set_xlabel(param)
     axes[0].set_ylabel("Macro-F1 (best classifier)")
     axes[-1].legend(fontsize=7)
-    return save_figure(fig, out / "explore_main_effects.png")
+    return save_figure(fig, out, "explore_main_effects.png")
 
 
 def _fig_heatmap(pareto: pd.DataFrame, pair: list[str], out: Path) -> Path:
@@ -91,7 +91,7 @@ def _fig_heatmap(pareto: pd.DataFrame, pair: list[str], out: Path) -> Path:
     ax.set_xlabel(pair[1])
     ax.set_ylabel(pair[0])
     fig.colorbar(image, ax=ax, label="mean Macro-F1 (best classifier)")
-    return save_figure(fig, out / "explore_heatmap.png")
+    return save_figure(fig, out, "explore_heatmap.png")
 
 
 def _fig_sensitivity(ranking: pd.DataFrame, out: Path) -> Path:
@@ -106,10 +106,11 @@ def _fig_sensitivity(ranking: pd.DataFrame, out: Path) -> Path:
         x = np.arange(len(terms)) + i * width
         ax.bar(x, part["value"], width, label=f"{cell[0]} / {cell[1]}")
         ax.vlines(x, part["ci_low"], part["ci_high"], color="black", linewidth=1)  # 95 % CI
-    ax.set_xticks(np.arange(len(terms)) + 0.4 - width / 2, terms, rotation=20)
+    names = [figure_label(term) for term in terms]
+    ax.set_xticks(np.arange(len(terms)) + 0.4 - width / 2, names, rotation=20)
     ax.set_ylabel(str(ranking["index"].iloc[0]))
     ax.legend(fontsize=7)
-    return save_figure(fig, out / "explore_sensitivity.png")
+    return save_figure(fig, out, "explore_sensitivity.png")
 
 
 def _fig_pareto(pareto: pd.DataFrame, out: Path) -> Path:
@@ -129,16 +130,16 @@ def _fig_pareto(pareto: pd.DataFrame, out: Path) -> Path:
     ax.set_xlabel("cost (sweep cost model)")
     ax.set_ylabel("mean Macro-F1 (best classifier)")
     ax.legend(fontsize=7)
-    return save_figure(fig, out / "explore_pareto.png")
+    return save_figure(fig, out, "explore_pareto.png")
 
 
 def _min_spec_table(min_spec: pd.DataFrame) -> Table:
     best = min_spec[min_spec["classifier"] == BEST]
     rows = tuple(
         (
-            r.machine,
-            r.scenario,
-            r.parameter,
+            literal(r.machine),
+            literal(r.scenario),
+            literal(r.parameter),
             f"{r.threshold:.3f}",
             "none" if pd.isna(r.min_level) else f"{r.min_level:g}",
             "absent" if pd.isna(r.base_level) else f"{r.base_level:g}",
@@ -148,12 +149,12 @@ def _min_spec_table(min_spec: pd.DataFrame) -> Table:
     return Table(("machine", "scenario", "parameter", "F1 needed", "minimum level", "base"), rows)
 
 
-def exploration_blocks(folder: Path) -> list[Block]:
-    """The section's blocks, or nothing when the folder holds no sweep."""
+def exploration_blocks(folder: Path, figures: Path) -> list[Block]:
+    """The section's blocks, or nothing when ``folder`` holds no sweep; figures go to
+    ``figures`` (the report's figures folder, which may be elsewhere: ``--out``)."""
     tables = _read(folder)
     if tables is None:
         return []
-    figures = folder / "figures"
     blocks: list[Block] = [
         Heading("Exploration", 2),
         Paragraph(
@@ -165,7 +166,7 @@ def exploration_blocks(folder: Path) -> list[Block]:
     if not tables["min_spec"].empty:
         target = tables["min_spec"]["target"].iloc[0]
         blocks += [
-            Heading(f"Minimum specification ({target})", 3),
+            Heading(f"Minimum specification ({literal(target)})", 3),
             _min_spec_table(tables["min_spec"]),
         ]
     drawn = []
@@ -183,7 +184,7 @@ def exploration_blocks(folder: Path) -> list[Block]:
             drawn.append(
                 (
                     _fig_heatmap(tables["pareto"], list(order.index[:2]), figures),
-                    f"Mean Macro-F1 over {order.index[0]} and {order.index[1]}, "
+                    f"Mean Macro-F1 over {literal(order.index[0])} and {literal(order.index[1])}, "
                     f"the two most influential parameters.",
                 )
             )

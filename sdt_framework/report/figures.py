@@ -20,7 +20,7 @@ from matplotlib.figure import Figure as MplFigure
 from ..bench.results import SCENARIO_TITLES
 from ..errors import SDTError
 from ..specs import SensorSpec
-from .document import Block, Figure, Heading, Paragraph
+from .document import Block, Figure, Heading, Paragraph, literal
 from .figures_features import lowest_severity, plot_tsne
 from .figures_scores import plot_confusions, plot_radar, worst_cells
 from .figures_signal import plot_noise, plot_sdt_overlay
@@ -72,7 +72,7 @@ def _draw_fig2(
     _, traces = degrade_all(recording, specs, seed)
     name = f"{recording.machine} / {recording.run} / {recording.channel}"
     fig = plot_sdt_overlay(traces, colors, title=f"{name}, first acquisition")
-    return fig, f"{name}, acquisition 0, seed {seed}."
+    return fig, f"{literal(name)}, acquisition 0, seed {seed}."
 
 
 def _fig3(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple[Draw, tuple]:
@@ -86,7 +86,7 @@ def _fig3(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple
 
 
 def _draw_fig3(rows: Any, sensors: list[str], seed: int, title: str) -> tuple[MplFigure, str]:
-    return plot_tsne(rows, sensors, seed=seed, title=title), title + "."
+    return plot_tsne(rows, sensors, seed=seed, title=title), literal(title) + "."
 
 
 def _fig4(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple[Draw, tuple]:
@@ -99,7 +99,8 @@ def _fig4(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple
 def _draw_fig4(specs: list[SensorSpec], seed: int, colors: dict[str, str]) -> tuple[MplFigure, str]:
     checks = noise_checks(specs, seed)
     stats = ", ".join(
-        f"{c.sensor}: RMS {c.sdt.rms_mg.mean():.2f} mg, NSD {c.sdt.nsd_ug_rthz.mean():.1f} µg/√Hz"
+        f"{literal(c.sensor)}: RMS {c.sdt.rms_mg.mean():.2f} mg, "
+        f"NSD {c.sdt.nsd_ug_rthz.mean():.1f} µg/√Hz"
         for c in checks
     )
     return plot_noise(checks, colors), f"8 windows of 2048 samples. {stats}."
@@ -126,8 +127,10 @@ def _fig7(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple
     if cells.empty:
         raise MissingInputError("no successful run")
     text = "; ".join(
-        f"{c.machine}: {SCENARIO_TITLES.get(c.scenario, c.scenario)}, {c.sensor}, "
-        f"{c.classifier.upper()} (macro F1 {c.macro_f1:.3f})"
+        literal(
+            f"{c.machine}: {SCENARIO_TITLES.get(c.scenario, c.scenario)}, {c.sensor}, "
+            f"{str(c.classifier).upper()} (macro F1 {c.macro_f1:.3f})"
+        )
         for c in cells.itertuples()
     )
     return _draw_fig7, (folder.confusion, cells, text)
@@ -147,12 +150,12 @@ _MAKERS: dict[str, Callable[[ResultsFolder, Any, dict[str, str]], tuple[Draw, tu
 }
 
 
-def _render(draw: Draw, args: tuple, path: Path) -> tuple[str, str]:
+def _render(draw: Draw, args: tuple, folder: Path, name: str) -> tuple[str, str]:
     """Draw and save one figure (in a worker process): ("ok", caption detail) or
     ("failed", why); an exception never stops the other figures."""
     try:
         fig, detail = draw(*args)
-        save_figure(fig, path)
+        save_figure(fig, folder, name)
         return "ok", detail
     except Exception as exc:  # one broken figure must not lose the rest of the report
         return "failed", f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
@@ -192,21 +195,22 @@ def draw_figures(
         try:
             todo[key] = _MAKERS[key](folder, registry, colors)
         except MissingInputError as exc:
-            blocks[key].append(Paragraph(f"Not drawn: {exc}."))
+            blocks[key].append(Paragraph(f"Not drawn: {literal(exc)}."))
         except Exception as exc:  # one broken figure must not lose the rest of the report
             message = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
-            blocks[key].append(Paragraph(f"Not drawn: the figure failed ({message})."))
-    paths = {key: out_dir / FIGURES[key][0] for key in todo}
-    jobs = [delayed(_render)(draw, args, paths[key]) for key, (draw, args) in todo.items()]
+            blocks[key].append(Paragraph(f"Not drawn: the figure failed ({literal(message)})."))
+    jobs = [
+        delayed(_render)(draw, args, out_dir, FIGURES[key][0]) for key, (draw, args) in todo.items()
+    ]
     n = _processes(len(jobs))
     drawn = Parallel(n_jobs=n, backend="loky")(jobs) if n > 1 else [j[0](*j[1]) for j in jobs]
     for key, (status, detail) in zip(todo, drawn, strict=True):
         title = FIGURES[key][1]
         if status == "ok":
             text = f"{captions.get(key, '')} {detail}".strip()
-            blocks[key].append(Figure(paths[key], text, title))
+            blocks[key].append(Figure(out_dir / FIGURES[key][0], text, title))
         elif detail.startswith("MissingInputError: "):
-            blocks[key].append(Paragraph(f"Not drawn: {detail.split(': ', 1)[1]}."))
+            blocks[key].append(Paragraph(f"Not drawn: {literal(detail.split(': ', 1)[1])}."))
         else:
-            blocks[key].append(Paragraph(f"Not drawn: the figure failed ({detail})."))
+            blocks[key].append(Paragraph(f"Not drawn: the figure failed ({literal(detail)})."))
     return [block for key in FIGURES for block in blocks[key]]

@@ -5,6 +5,12 @@ first machine of the features table, the healthy windows plus, for each fault
 class, the windows of its lowest severity level present (level 1 when the
 data has it). Each sensor gets its own panel and its own embedding, computed
 on that sensor's standardised features (zero mean, unit variance per feature).
+
+A feature whose spread is rounding (constant, or within 1e-9 of its size, as
+every feature of a DC-only recording is) carries nothing to embed and is left
+out; a sensor with no other feature, or too few windows, gets a panel saying
+so instead of an embedding (scikit-learn's t-SNE crashed the process,
+segmentation fault and all, on identical points).
 """
 
 from __future__ import annotations
@@ -15,7 +21,13 @@ from matplotlib.figure import Figure
 
 from .style import figure_label, new_figure
 
-__all__ = ["FEATURE_META", "feature_columns", "lowest_severity", "plot_tsne"]
+__all__ = ["FEATURE_META", "MIN_WINDOWS", "feature_columns", "lowest_severity", "plot_tsne"]
+
+#: a feature whose standard deviation is at most this share of its largest magnitude
+#: varies by rounding only: the float64 spread of a value computed from equal windows
+CONSTANT_SPREAD = 1e-9
+#: fewest windows a panel embeds (t-SNE needs its perplexity, at least 2, below the count)
+MIN_WINDOWS = 5
 
 #: leading columns of features.parquet that are not features
 FEATURE_META = (
@@ -51,17 +63,30 @@ def lowest_severity(features: pd.DataFrame, machine: str | None = None) -> pd.Da
     return pd.concat([healthy, faults[faults["severity"] == lowest]], ignore_index=True)
 
 
-def _embed(values: np.ndarray, seed: int) -> np.ndarray:
+def _varying(values: np.ndarray) -> np.ndarray:
+    """Which columns vary by more than rounding (non-finite values counted as 0)."""
+    finite = np.nan_to_num(values, nan=0.0, posinf=0.0, neginf=0.0)
+    spread = finite.std(axis=0)
+    return spread > CONSTANT_SPREAD * np.abs(finite).max(axis=0, initial=0.0)
+
+
+def _embed(values: np.ndarray, seed: int) -> np.ndarray | str:
+    """The 2-D t-SNE of ``values`` (windows x features), or why there is none."""
     from sklearn.manifold import TSNE
     from threadpoolctl import threadpool_limits
 
-    std = values.std(axis=0)
-    scaled = (values - values.mean(axis=0)) / np.where(std > 0, std, 1.0)
+    if len(values) < MIN_WINDOWS:
+        return f"{len(values)} windows: too few to embed"
+    keep = _varying(values)
+    if not keep.any():
+        return f"no feature varies over the {len(values)} windows (constant or not finite)"
+    finite = np.nan_to_num(values[:, keep], nan=0.0, posinf=0.0, neginf=0.0)
+    scaled = (finite - finite.mean(axis=0)) / finite.std(axis=0)
     perplexity = float(min(30.0, max(2.0, (len(values) - 1) / 3)))
     tsne = TSNE(n_components=2, perplexity=perplexity, init="pca", random_state=seed)
     # one OpenMP thread: Barnes-Hut t-SNE slows down ~15x when threads contend for cores
     with threadpool_limits(limits=1, user_api="openmp"):
-        return tsne.fit_transform(np.nan_to_num(scaled))
+        return tsne.fit_transform(scaled)
 
 
 def plot_tsne(
@@ -101,6 +126,11 @@ def plot_tsne(
         if len(rows) > max_points:
             rows = rows.iloc[np.sort(rng.choice(len(rows), max_points, replace=False))]
         xy = _embed(rows[columns].to_numpy(dtype=np.float64), seed)
+        ax.set(xlabel="t-SNE 1", ylabel="t-SNE 2", xticks=[], yticks=[])
+        ax.set_title(f"{sensor} ({len(rows)} windows)", fontsize=10)
+        if isinstance(xy, str):
+            ax.text(0.5, 0.5, xy, ha="center", va="center", wrap=True, transform=ax.transAxes)
+            continue
         for k, label in enumerate(classes):
             mask = (rows["condition"] == label).to_numpy()
             ax.scatter(
@@ -112,9 +142,8 @@ def plot_tsne(
                 alpha=0.8,
                 edgecolors="none",
             )
-        ax.set(xlabel="t-SNE 1", ylabel="t-SNE 2", xticks=[], yticks=[])
-        ax.set_title(f"{sensor} ({len(rows)} windows)", fontsize=10)
-    handles, labels = axes[0].get_legend_handles_labels()
+    drawn = [ax for ax in axes if ax.collections]
+    handles, labels = drawn[0].get_legend_handles_labels() if drawn else ([], [])
     if handles:
         fig.legend(
             handles, labels, loc="outside right center", fontsize=8, title="class", markerscale=2

@@ -26,6 +26,7 @@ from matplotlib.figure import Figure as MplFigure
 
 from ..data.synth_model import MACHINES
 from ..errors import SDTError
+from ..labels import slug
 from ..severity import (
     BEARINGS,
     asd,
@@ -36,7 +37,7 @@ from ..severity import (
     running_speed,
     velocity_spectrum,
 )
-from .document import Block, Figure, Heading, Paragraph
+from .document import Block, Figure, Heading, Paragraph, literal
 from .load import ResultsFolder
 from .signals import SensorTrace, degrade_all, open_config_dataset
 from .style import new_figure, save_figure
@@ -157,14 +158,13 @@ def _envelope_blocks(mine: list, machine: str, specs: list, seed: int, figures_d
         )
         bandwidths = {s.name: chain_bandwidth(s) for s in specs}
         fig, notes = envelope_figure(traces, bandwidths, lines, title)
-        name = f"envelope_{machine}_{condition.replace(' ', '_')}.png"
-        path = save_figure(fig, figures_dir / name)
+        path = save_figure(fig, figures_dir, f"{slug('envelope', machine, condition)}.png")
         text = ", ".join(f"{k} {v:.2f} Hz" for k, v in lines.items())
         caption = (
             f"{title} (speed read off the reference's spectrum; nominal {nominal * 60:.0f} "
             f"rpm). Lines: {text}. " + "; ".join(notes) + "."
         )
-        blocks.append(Figure(path, caption, title))
+        blocks.append(Figure(path, literal(caption), literal(title)))
     return blocks
 
 
@@ -174,8 +174,9 @@ def _velocity_blocks(mine: list, rec: Any, specs: list, seed: int, figures_dir, 
     _, traces = degrade_all(rec, specs, seed)
     title = f"{machine} {rec.run} {rec.channel}: velocity spectrum 10-1000 Hz (worst-graded)"
     fig, notes = _velocity_figure(traces, colors, title)
-    path = save_figure(fig, figures_dir / f"velocity_{machine}.png")
-    blocks: list[Block] = [Figure(path, f"{title}. " + "; ".join(notes) + ".", title)]
+    path = save_figure(fig, figures_dir, f"{slug('velocity', machine)}.png")
+    caption = f"{title}. " + "; ".join(notes) + "."
+    blocks: list[Block] = [Figure(path, literal(caption), literal(title))]
     family = [r for r in mine if r.condition == rec.condition and r.channel == rec.channel]
     healthy = [r for r in mine if r.severity is None and r.channel == rec.channel][:1]
     levels = [
@@ -184,8 +185,9 @@ def _velocity_blocks(mine: list, rec: Any, specs: list, seed: int, figures_dir, 
     ]
     title = f"{machine} {rec.channel}: severity waterfall, {rec.condition} levels and healthy"
     fig, notes = _waterfall_figure(levels, colors, title)
-    path = save_figure(fig, figures_dir / f"waterfall_{machine}.png")
-    blocks.append(Figure(path, f"{title}. " + "; ".join(notes) + ".", title))
+    path = save_figure(fig, figures_dir, f"{slug('waterfall', machine)}.png")
+    caption = f"{title}. " + "; ".join(notes) + "."
+    blocks.append(Figure(path, literal(caption), literal(title)))
     return blocks
 
 
@@ -200,7 +202,7 @@ def spectral_blocks(
         specs = [registry.sensor(name) for name in folder.sensors]
         recordings = {r.recording_id: r for r in open_config_dataset(folder.config, registry)}
     except SDTError as exc:
-        return [*blocks, Paragraph(f"Not drawn: {exc}")]
+        return [*blocks, Paragraph(f"Not drawn: {literal(exc)}")]
     seed = folder.config.seed
     features = folder.features
     for machine in sorted(features["machine"].unique()):

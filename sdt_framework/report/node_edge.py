@@ -16,7 +16,7 @@ from ..edge.node import NodeBudget, NodeSettings, node_budget
 from ..edge.node_table import format_life, node_rows, node_summary
 from ..errors import SDTError
 from ..features import resolve_feature_set
-from .document import Block, Heading, Items, Paragraph, Table
+from .document import Block, Heading, Items, Paragraph, Table, literal
 from .load import ResultsFolder
 
 __all__ = ["BATTERY", "node_blocks", "node_budgets"]
@@ -48,7 +48,7 @@ def node_blocks(folder: ResultsFolder, registry: Any) -> list[Block]:
     try:
         budgets = node_budgets(folder, registry)
     except SDTError as exc:
-        return [*blocks, Paragraph(f"Not shown: {exc}")]
+        return [*blocks, Paragraph(f"Not shown: {literal(exc)}")]
     if not budgets:
         return [*blocks, Paragraph("Not shown: config.toml is missing or invalid.")]
     blocks.append(
@@ -61,14 +61,16 @@ def node_blocks(folder: ResultsFolder, registry: Any) -> list[Block]:
         )
     )
     for name, budget in budgets.items():
-        blocks.append(Heading(name, 4))
+        blocks.append(Heading(literal(name), 4))
         if isinstance(budget, str):
-            blocks.append(Paragraph(f"Not computed: {budget}"))
+            blocks.append(Paragraph(f"Not computed: {literal(budget)}"))
             continue
         columns, rows = node_rows(budget)
-        blocks.append(Table(tuple(columns), tuple(tuple(r) for r in rows), node_summary(budget)))
+        cells = tuple(tuple(map(literal, r)) for r in rows)
+        summary = literal(node_summary(budget))
+        blocks.append(Table(tuple(map(literal, columns)), cells, summary))
         if budget.notes:
-            blocks.append(Items(budget.notes))
+            blocks.append(Items(tuple(map(literal, budget.notes))))
     return blocks
 
 

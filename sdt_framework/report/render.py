@@ -2,6 +2,11 @@
 
 The HTML page has its style inline and every figure as a ``data:image/png;base64``
 URI: one file that opens anywhere, offline, with no external CSS, JS or fonts.
+
+Inline text is the subset :mod:`.document` defines (``**bold**``, ```code```,
+backslash escapes; data enters through :func:`.document.literal`). Both
+renderers show every control character as its escape
+(:func:`sdt_framework.labels.visible`) and never let a ``<`` open a tag.
 """
 
 from __future__ import annotations
@@ -12,18 +17,19 @@ import os
 import re
 from collections.abc import Sequence
 from pathlib import Path
+from urllib.parse import quote
 
+from ..labels import visible
 from .document import Block, Code, Figure, Heading, Items, Paragraph, Table
 
 __all__ = ["render_html", "render_markdown"]
 
-_BOLD = re.compile(r"\*\*(.+?)\*\*")
-#: C0 and C1 controls and DEL except newline and tab, and Unicode format characters
-#: (bidirectional overrides): the same set ``sdt`` shows escaped on the terminal
-_CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\u200b-\u200f\u202a-\u202e\u2066-\u2069\ufeff]")
+#: the inline subset, left to right: a backslash escape of ASCII punctuation, a code
+#: span, a bold span (whose text may hold escapes, ``\*`` never closing it)
+_INLINE = re.compile(r"\\([!-/:-@\[-`{-~])|`([^`]+)`|\*\*((?:\\.|[^\\])+?)\*\*")
 #: a "<" that would open an HTML tag, comment or declaration in a Markdown viewer
 _TAG_START = re.compile(r"<(?=[A-Za-z/!?])")
-_CODE = re.compile(r"`([^`]+)`")
+_BACKTICKS = re.compile(r"`+")
 _CSS = """
 body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;margin:2em auto;
 max-width:1200px;padding:0 1em;color:#222;line-height:1.45}
@@ -39,30 +45,49 @@ code{background:#f3f3f3;padding:0 .2em}.scroll{overflow-x:auto}
 """
 
 
-def _shown(text: str) -> str:
-    """``text`` with every control or format character written as its escape (``\\x1b``).
-
-    Manifest paths, labels and file names reach the report; an ESC or BEL in
-    one would drive the terminal of whoever ``cat``s report.md, as it would
-    have on the terminal where ``sdt`` prints the same text escaped.
-    """
-
-    def escape(match: re.Match[str]) -> str:
-        code = ord(match.group())
-        return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}"
-
-    return _CONTROL.sub(escape, text)
-
-
 def _md(text: str) -> str:
     """Markdown text with controls escaped and tag openers neutralised (``<script>`` shown)."""
-    return _TAG_START.sub("&lt;", _shown(text))
+    return _TAG_START.sub("&lt;", visible(text))
+
+
+def _inline(text: str) -> str:
+    """HTML of inline text whose controls are already escaped."""
+    out, end = [], 0
+    for match in _INLINE.finditer(text):
+        out.append(html.escape(text[end : match.start()], quote=False))
+        escaped, span, bold = match.groups()
+        if escaped is not None:
+            out.append(html.escape(escaped, quote=False))
+        elif span is not None:
+            out.append(f"<code>{html.escape(span, quote=False)}</code>")
+        else:
+            out.append(f"<strong>{_inline(bold)}</strong>")
+        end = match.end()
+    return "".join(out) + html.escape(text[end:], quote=False)
 
 
 def _inline_html(text: str) -> str:
-    escaped = html.escape(_shown(text), quote=False)
-    escaped = _CODE.sub(r"<code>\1</code>", escaped)
-    return _BOLD.sub(r"<strong>\1</strong>", escaped)
+    return _inline(visible(text))
+
+
+def _unmarked(text: str) -> str:
+    """Inline text with its markup removed (an image's alt text, the page title)."""
+
+    def plain(match: re.Match[str]) -> str:
+        escaped, span, bold = match.groups()
+        return escaped if escaped is not None else span if span is not None else _unmarked(bold)
+
+    return _INLINE.sub(plain, text)
+
+
+def _inline_text(text: str) -> str:
+    return _unmarked(visible(text))
+
+
+def _fence(text: str) -> str:
+    """A code fence longer than any run of backticks in ``text`` (CommonMark's rule)."""
+    longest = max((len(run) for run in _BACKTICKS.findall(text)), default=0)
+    return "`" * max(3, longest + 1)
 
 
 def _is_block_row(row: Sequence[str]) -> bool:
@@ -84,14 +109,16 @@ def render_markdown(blocks: Sequence[Block], base: str | os.PathLike[str]) -> st
         elif isinstance(block, Items):
             out.append("\n".join(f"- {_md(item)}" for item in block.items))
         elif isinstance(block, Code):
-            out.append(f"```{block.lang}\n{_shown(block.text.rstrip())}\n```")
+            text = visible(block.text.rstrip())
+            fence = _fence(text)
+            out.append(f"{fence}{block.lang}\n{text}\n{fence}")
         elif isinstance(block, Table):
             lines = ["| " + " | ".join(_md_cell(c) for c in block.header) + " |"]
             lines.append("|" + "---|" * len(block.header))
             lines += ["| " + " | ".join(_md_cell(c) for c in row) + " |" for row in block.rows]
             out.append("\n".join(lines) + (f"\n\n{_md(block.note)}" if block.note else ""))
         elif isinstance(block, Figure):
-            rel = Path(os.path.relpath(block.path, base)).as_posix()
+            rel = quote(Path(os.path.relpath(block.path, base)).as_posix())
             out.append(f"![{_md(block.alt or block.caption)}]({rel})\n\n*{_md(block.caption)}*")
             out += [_md(extra) for extra in block.extra]
     return "\n\n".join(out) + "\n"
@@ -124,12 +151,12 @@ def render_html(blocks: Sequence[Block], title: str) -> str:
             items = "".join(f"<li>{_inline_html(i)}</li>" for i in block.items)
             body.append(f"<ul>{items}</ul>")
         elif isinstance(block, Code):
-            body.append(f"<pre><code>{html.escape(_shown(block.text.rstrip()))}</code></pre>")
+            body.append(f"<pre><code>{html.escape(visible(block.text.rstrip()))}</code></pre>")
         elif isinstance(block, Table):
             body.append(_html_table(block))
         elif isinstance(block, Figure):
             data = base64.b64encode(Path(block.path).read_bytes()).decode("ascii")
-            alt = html.escape(_shown(block.alt or block.caption))
+            alt = html.escape(_inline_text(block.alt or block.caption))
             extra = "".join(f"<p>{_inline_html(e)}</p>" for e in block.extra)
             body.append(
                 f'<figure><img alt="{alt}" src="data:image/png;base64,{data}">'
@@ -138,7 +165,7 @@ def render_html(blocks: Sequence[Block], title: str) -> str:
     return (
         '<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">'
         '<meta name="viewport" content="width=device-width, initial-scale=1">'
-        f"<title>{html.escape(_shown(title))}</title><style>{_CSS}</style></head>\n<body>\n"
+        f"<title>{html.escape(_inline_text(title))}</title><style>{_CSS}</style></head>\n<body>\n"
         + "\n".join(body)
         + "\n</body></html>\n"
     )

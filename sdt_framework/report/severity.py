@@ -15,7 +15,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..severity import ZONES, Agreement, assign_tables, zone_agreement
-from .document import Block, Heading, Paragraph, Table
+from .document import Block, Heading, Paragraph, Table, literal
 from .figures_severity import spectral_blocks
 from .load import ResultsFolder
 
@@ -38,10 +38,10 @@ def agreement_rows(agreement: Agreement, channels: str = "every") -> list[tuple[
         zones = pooled if not pooled.empty else zones
     return [
         (
-            r.machine,
-            r.channel,
-            r.sensor,
-            r.table,
+            literal(r.machine),
+            literal(r.channel),
+            literal(r.sensor),
+            literal(r.table),
             _pct(r.share_same),
             _ci(r.ci_low, r.ci_high),
             _pct(r.share_better),
@@ -68,11 +68,11 @@ AGREEMENT_HEADER = (
 def _tables_used(agreement: Agreement) -> list[Block]:
     rows = tuple(
         (
-            a.machine,
-            a.table.name,
+            literal(a.machine),
+            literal(a.table.name),
             f"{a.table.boundaries.a_b:g} / {a.table.boundaries.b_c:g} / {a.table.boundaries.c_d:g}",
-            a.table.source,
-            a.reason,
+            literal(a.table.source),
+            literal(a.reason),
         )
         for a in agreement.assignments.values()
     )
@@ -82,7 +82,7 @@ def _tables_used(agreement: Agreement) -> list[Block]:
     if agreement.unassigned:
         blocks.append(
             Paragraph(
-                f"No zone table for {', '.join(agreement.unassigned)}: left out "
+                f"No zone table for {', '.join(map(literal, agreement.unassigned))}: left out "
                 f"(`zones = {{ MACHINE = 'TABLE' }}` under `[benchmark]` in the config, or "
                 f"`sdt compare --zones MACHINE=TABLE`, grades it)."
             )
@@ -99,9 +99,10 @@ def _confusions(agreement: Agreement) -> list[Block]:
         counts = part.pivot(index="reference_zone", columns="sensor_zone", values="count")
         counts = counts.reindex(index=list(ZONES), columns=list(ZONES), fill_value=0)
         rows = tuple((z, *(str(int(v)) for v in counts.loc[z])) for z in ZONES)
+        title = f"{literal(machine)} {literal(channel)}: reference \\ {literal(sensor)}"
         blocks.append(
             Table(
-                (f"{machine} {channel}: reference \\ {sensor}", *ZONES),
+                (title, *ZONES),
                 rows,
                 "windows; above the diagonal the sensor grades worse, below it better",
             )
@@ -112,9 +113,9 @@ def _confusions(agreement: Agreement) -> list[Block]:
 def _alarms(agreement: Agreement) -> Table:
     rows = tuple(
         (
-            r.machine,
-            r.channel,
-            r.sensor,
+            literal(r.machine),
+            literal(r.channel),
+            literal(r.sensor),
             "–" if np.isnan(r.baseline) else f"{r.baseline:.2f}",
             "–" if np.isnan(r.alarm) else f"{r.alarm:.2f}{' *' if r.capped else ''}",
             f"{r.trip:.2f}",
@@ -187,7 +188,7 @@ def severity_blocks(
     try:
         agreement = folder_agreement(folder)
     except SDTError as exc:
-        return [*blocks, Paragraph(f"Not shown: {exc}")]
+        return [*blocks, Paragraph(f"Not shown: {literal(exc)}")]
     blocks += [
         Paragraph(
             "How a condition-monitoring engineer grades the machine: each window's V_RMS "

@@ -12,7 +12,7 @@ import pandas as pd
 
 from ..bench.results import SCENARIO_TITLES
 from ..bench.table4 import EMPTY, NOTE, build_table4, table4, table4_blocks
-from .document import Table
+from .document import Table, literal
 
 __all__ = ["allocation_table", "delta_table", "failed_table", "table4_table"]
 
@@ -22,7 +22,12 @@ def table4_table(results: pd.DataFrame, sensors: list[str]) -> Table:
     table = build_table4(results, sensors)
     if table.empty:
         return Table(("",), ((EMPTY,),))
-    return Table(table.header, tuple(table.rows()), NOTE)
+    rows: list[tuple[str, ...]] = []
+    for block in table.blocks:  # Table4.rows(), with the sensors' names as literal text
+        rows.append((f"**{block.title}**",) + ("",) * len(table.columns))
+        for sensor, cells in zip(block.sensors, block.cells, strict=True):
+            rows.append((literal(sensor), *(cell.inline() for cell in cells)))
+    return Table(tuple(map(literal, table.header)), tuple(rows), NOTE)
 
 
 def delta_table(results: pd.DataFrame, sensors: list[str], reference: str) -> Table | None:
@@ -65,10 +70,10 @@ def delta_table(results: pd.DataFrame, sensors: list[str], reference: str) -> Ta
                 text = "–" if np.isnan(value) else f"{value:+.4f}"
                 bold = not np.isnan(value) and value == best[col]
                 cells.append(f"**{text}**" if bold else text)
-            rows.append((sensor, *cells))
-    header = ("Sensor", *(f"{m} {c.upper()}" for m, c in columns))
+            rows.append((literal(sensor), *cells))
+    header = ("Sensor", *(literal(f"{m} {c.upper()}") for m, c in columns))
     note = (
-        f"Mean Macro F1 of the sensor minus that of the reference ({reference}) for the "
+        f"Mean Macro F1 of the sensor minus that of the reference ({literal(reference)}) for the "
         "same scenario, machine and classifier; negative = the sensor costs performance. "
         "Largest delta per column and scenario in bold."
     )
@@ -77,7 +82,7 @@ def delta_table(results: pd.DataFrame, sensors: list[str], reference: str) -> Ta
 
 def _runs(names: pd.Series, limit: int = 6) -> str:
     runs = sorted(set(names))
-    shown = ", ".join(runs[:limit])
+    shown = ", ".join(map(literal, runs[:limit]))
     return f"{len(runs)}: {shown}" + (f", … (+{len(runs) - limit})" if len(runs) > limit else "")
 
 
@@ -87,8 +92,8 @@ def allocation_table(allocation: pd.DataFrame) -> Table:
     for (machine, scenario), part in allocation.groupby(["machine", "scenario"], sort=True):
         rows.append(
             (
-                str(machine),
-                str(scenario),
+                literal(machine),
+                literal(scenario),
                 _runs(part.loc[part["side"] == "train", "run"]),
                 _runs(part.loc[part["side"] == "test", "run"]),
             )
@@ -103,7 +108,7 @@ def failed_table(failed: pd.DataFrame, limit: int = 50) -> Table:
     rows = []
     for _, run in failed.head(limit).iterrows():
         error = str(run.get("error") or "no message").strip().splitlines() or ["no message"]
-        rows.append((*(str(run[k]) for k in keys), error[0][:200]))
+        rows.append((*(literal(run[k]) for k in keys), literal(error[0][:200])))
     more = f"; first {limit} shown" if len(failed) > limit else ""
     note = f"{len(failed)} failed run(s){more}"
     return Table((*keys, "error"), tuple(rows), note + "; full messages in results.csv.")

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from .document import Block, Heading, Paragraph, Table
+from .document import Block, Heading, Paragraph, Table, literal
 from .load import ResultsFolder
 
 __all__ = ["unit_blocks", "unit_spread"]
@@ -55,9 +55,9 @@ def unit_blocks(folder: ResultsFolder) -> list[Block]:
     spread = unit_spread(results)
     rows = tuple(
         (
-            r.scenario,
-            r.sensor,
-            r.classifier,
+            literal(r.scenario),
+            literal(r.sensor),
+            literal(r.classifier),
             str(r.units),
             str(r.repeats),
             _f(r.mean),

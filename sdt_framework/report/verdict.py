@@ -14,7 +14,7 @@ from pathlib import Path
 from ..errors import SDTError
 from ..verdict import Comparison, compare, plot_cd_diagram, verdict
 from ..verdict.sentences import fmt_delta
-from .document import Block, Figure, Heading, Items, Paragraph, Table
+from .document import Block, Figure, Heading, Items, Paragraph, Table, code, literal
 from .load import ResultsFolder
 from .style import save_figure
 
@@ -25,7 +25,7 @@ CD_FIGURE = "cd_diagram.png"
 
 def _intro(comparison: Comparison) -> Paragraph:
     return Paragraph(
-        f"Each sensor against the reference `{comparison.baseline}`, runs paired by machine, "
+        f"Each sensor against the reference {code(comparison.baseline)}, runs paired by machine, "
         f"scenario, classifier and repetition, at a margin of ±{comparison.margin:g} Macro F1. "
         "Δ is the sensor's Macro F1 minus the reference's, with its 95 % interval over "
         "repetitions in brackets and, where per-recording counts exist, its 95 % interval "
@@ -68,8 +68,8 @@ def missing_reference_note(folder: ResultsFolder) -> str | None:
     present = [s for s in folder.sensors if s in set(folder.ok["sensor"].dropna())]
     if reference in present:
         return None
-    holds = ", ".join(present) if present else "no successful run"
-    text = f"Not available: the reference {reference} "
+    holds = ", ".join(map(literal, present)) if present else "no successful run"
+    text = f"Not available: the reference {literal(reference)} "
     if reference in set(folder.results["sensor"].dropna()):
         text += (
             f"has no successful run (every run of it failed), so nothing is compared with it "
@@ -77,15 +77,16 @@ def missing_reference_note(folder: ResultsFolder) -> str | None:
         )
     else:
         sensors = ",".join([reference, *present])
+        command = code(f"sdt benchmark --sensors {sensors} --out NEW_FOLDER")
         text += (
             f"was not among the benchmark's sensors, so nothing is compared with it (this "
             f"folder holds {holds}). For this section, run the benchmark again with the "
-            f"reference in --sensors, e.g. `sdt benchmark --sensors {sensors} --out NEW_FOLDER`"
+            f"reference in --sensors, e.g. {command}"
         )
     if len(present) >= 2:
         text += (
             f"; to compare the sensors here with one of them: "
-            f"`sdt compare {folder.path} --baseline {present[0]}`"
+            f"{code(f'sdt compare {folder.path} --baseline {present[0]}')}"
         )
     return text + "."
 
@@ -105,12 +106,15 @@ def _group_table(comparison: Comparison) -> Table | None:
         key = key if isinstance(key, tuple) else (key,)
         by_candidate = {r.candidate: r for r in part.itertuples()}
         cells = [
-            f"**{r.label}** {fmt_delta(r)}" if (r := by_candidate.get(c)) is not None else "–"
+            f"**{literal(r.label)}** {fmt_delta(r)}"  # numbers only
+            if (r := by_candidate.get(c)) is not None
+            else "–"
             for c in candidates
         ]
-        rows.append((*(str(key[i]) for i in shown), *cells))
+        rows.append((*(literal(key[i]) for i in shown), *cells))
     note = "Label over all classifiers of the machine and scenario (group rows of comparison.csv)."
-    return Table((*(keys[i] for i in shown), *candidates), tuple(rows), note)
+    header = (*(literal(keys[i]) for i in shown), *map(literal, candidates))
+    return Table(header, tuple(rows), note)
 
 
 def _cd_figure(comparison: Comparison, colors: dict[str, str], figures_dir: Path) -> Block:
@@ -118,10 +122,10 @@ def _cd_figure(comparison: Comparison, colors: dict[str, str], figures_dir: Path
     assert ranking is not None
     try:
         fig = plot_cd_diagram(ranking, colors, title="Average rank of Macro F1")
-        path = save_figure(fig, figures_dir / CD_FIGURE)
+        path = save_figure(fig, figures_dir, CD_FIGURE)
     except Exception as exc:  # one broken figure must not lose the rest of the report
         message = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
-        return Paragraph(f"Critical-difference diagram not drawn: {message}.")
+        return Paragraph(f"Critical-difference diagram not drawn: {literal(message)}.")
     caption = (
         "Critical-difference diagram (Demšar 2006): average rank of each sensor over the "
         f"{ranking.n_blocks} blocks (1 = best, on the left); sensors joined by a bar are not "
@@ -148,12 +152,12 @@ def verdict_blocks(
         comparison = folder_comparison(folder, margin)
         findings = verdict(comparison)
     except SDTError as exc:
-        return [*blocks, Paragraph(f"Not available: {exc}.")]
+        return [*blocks, Paragraph(f"Not available: {literal(exc)}.")]
     except Exception as exc:  # a failing verdict must not lose the rest of the report
         message = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
-        return [*blocks, Paragraph(f"Not available: the comparison failed ({message}).")]
+        return [*blocks, Paragraph(f"Not available: the comparison failed ({literal(message)}).")]
     blocks.append(_intro(comparison))
-    blocks.append(Items(tuple(f"**{f.scope}**: {f.text}" for f in findings)))
+    blocks.append(Items(tuple(f"**{literal(f.scope)}**: {literal(f.text)}" for f in findings)))
     group_table = _group_table(comparison)
     if group_table is not None:
         blocks.append(group_table)

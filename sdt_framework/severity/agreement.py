@@ -68,6 +68,12 @@ def paired_zones(
     missing = sorted(need - set(features.columns))
     if missing:
         raise SDTError(f"features.parquet lacks column(s) {missing}: the severity needs V_RMS")
+    if not assignments:
+        machines = ", ".join(map(str, sorted(features["machine"].unique())))
+        raise SDTError(
+            f"no zone table grades machine(s) {machines}; name one per machine with "
+            f"zones = {{ MACHINE = 'TABLE' }} under [benchmark] or sdt compare --zones"
+        )
     frame = features[features["machine"].isin(list(assignments))]
     if "unit" in frame.columns:  # per-unit runs: the first unit of each sensor
         frame = frame[frame["unit"] == frame.groupby("sensor")["unit"].transform("min")]
@@ -108,8 +114,9 @@ def alarm_thresholds(pairs: pd.DataFrame, assignments: dict[str, Assignment]) ->
     """ALARM and TRIP per machine and channel from the reference's healthy baseline."""
     healthy = pairs[pairs["healthy"]].drop_duplicates(_WINDOW)
     base = healthy.groupby(["machine", "channel"])["v_ref"].mean().rename("baseline").reset_index()
-    b_c = base["machine"].map(lambda m: assignments[m].table.boundaries.b_c)
-    c_d = base["machine"].map(lambda m: assignments[m].table.boundaries.c_d)
+    # float: an empty mapped column keeps the machines' string dtype, which arithmetic refuses
+    b_c = base["machine"].map(lambda m: assignments[m].table.boundaries.b_c).astype(float)
+    c_d = base["machine"].map(lambda m: assignments[m].table.boundaries.c_d).astype(float)
     base["alarm"] = np.minimum(base["baseline"] + ALARM_FRACTION * b_c, HEADROOM * b_c)
     base["capped"] = base["baseline"] + ALARM_FRACTION * b_c > HEADROOM * b_c  # baseline > B/C
     base["trip"] = HEADROOM * c_d
@@ -148,10 +155,26 @@ def zone_agreement(
     n_boot: int = 2000,
     seed: int = 0,
 ) -> Agreement:
-    """Zone and alarm agreement of each sensor with ``reference`` (see the module doc)."""
+    """Zone and alarm agreement of each sensor with ``reference`` (see the module doc).
+
+    Raises
+    ------
+    SDTError
+        When no window of another sensor pairs with a reference window (a
+        reference-only benchmark, or every other profile skipped): nothing to grade.
+    """
     machines = sorted(features["machine"].unique())
     unassigned = [m for m in machines if m not in assignments]
     pairs = paired_zones(features, reference, assignments)
+    if pairs.empty:
+        graded = features["machine"].isin(list(assignments))
+        others = features.loc[graded & (features["sensor"] != reference), "sensor"].unique()
+        raise SDTError(
+            f"no sensor besides the reference {reference!r} has windows to grade against it"
+            if len(others) == 0
+            else f"no window of {', '.join(map(repr, others))} pairs with one of the reference "
+            f"{reference!r} (same machine, channel, recording, acquisition and window)"
+        )
     thresholds = alarm_thresholds(pairs, assignments)
     pairs = pairs.merge(thresholds, on=["machine", "channel"], how="left")
     pairs["same"] = pairs["zone_ref"] == pairs["zone_sensor"]

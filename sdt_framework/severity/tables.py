@@ -9,7 +9,9 @@ limits are a file of the same form, given by path. A file holds one or more
 ``[[table]]`` entries; ``FILE.toml#name`` picks one of several.
 
 Every fault in a table (boundaries not increasing, an unknown machine group,
-a unit other than mm/s, another band) is one :class:`SpecFileError` line.
+a unit other than mm/s, another band, a boundary written as a boolean or a
+string: ``b_c = true`` is not 1 mm/s, ``"1.0"`` is text) is one
+:class:`SpecFileError` line.
 """
 
 from __future__ import annotations
@@ -62,6 +64,18 @@ DEFAULT_TABLES: dict[str, tuple[str, str]] = {
 }
 
 
+def _number(value: object) -> object:
+    """``value`` if it is a TOML number (integer or float); a boolean or a string is refused,
+    where pydantic's lax mode would read ``true`` as 1 and ``"1.0"`` as 1.0."""
+    if isinstance(value, bool):
+        raise ValueError(f"must be a number, got the boolean {str(value).lower()}")
+    if isinstance(value, str):
+        raise ValueError(f"must be a number, got the string {value!r}: drop the quotes")
+    if not isinstance(value, int | float):
+        raise ValueError(f"must be a number, got {type(value).__name__} {value!r}")
+    return value
+
+
 class Boundaries(BaseModel):
     """The A/B, B/C and C/D boundaries, strictly increasing, in the table's unit."""
 
@@ -70,6 +84,8 @@ class Boundaries(BaseModel):
     a_b: float = Field(gt=0, allow_inf_nan=False)
     b_c: float = Field(gt=0, allow_inf_nan=False)
     c_d: float = Field(gt=0, allow_inf_nan=False)
+
+    _numbers = field_validator("a_b", "b_c", "c_d", mode="before")(_number)
 
     @model_validator(mode="after")
     def _increasing(self) -> Boundaries:
@@ -115,6 +131,14 @@ class ZoneTable(BaseModel):
                 f"unit {value!r} is not mm/s: the tables grade V_RMS in mm/s; convert the "
                 f'boundaries (1 in/s = 25.4 mm/s) and write unit = "mm/s"'
             )
+        return value
+
+    @field_validator("band_hz", mode="before")
+    @classmethod
+    def _band_numbers(cls, value: object) -> object:
+        if isinstance(value, list | tuple):
+            for item in value:
+                _number(item)
         return value
 
     @field_validator("band_hz")

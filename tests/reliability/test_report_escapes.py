@@ -5,6 +5,9 @@ title; ``ESC [ 2 J`` clears it) reached both files raw, and a ``<script>`` tag
 reached report.md raw (a Markdown viewer renders HTML). The terminal already
 showed such text escaped; the files now do the same: controls as ``\\x1b``,
 ``<script>`` as ``&lt;script>`` in Markdown and ``&lt;script&gt;`` in HTML.
+Since round 4 (issue 39) the Markdown also escapes the data's Markdown
+punctuation, so its brackets read ``\\[`` and ``\\]`` there (a viewer shows them as
+written; test_report_hostile_labels.py renders it).
 """
 
 from __future__ import annotations
@@ -16,6 +19,7 @@ import sys
 import pandas as pd
 
 HOSTILE = "runs/\x1b]0;pwned\x07evil\x1b[2J<script>alert(1)</script>.csv"
+HOSTILE_SHOWN = "runs/\\x1b]0;pwned\\x07evil\\x1b[2J"
 
 
 def test_control_bytes_and_tags_are_escaped_in_both_files(tmp_path):
@@ -40,9 +44,9 @@ def test_control_bytes_and_tags_are_escaped_in_both_files(tmp_path):
     assert run.returncode == 0, run.stderr
     md = (root / "report.md").read_text(encoding="utf-8")
     page = (root / "report.html").read_text(encoding="utf-8")
-    for text in (md, page):
+    for text, shown in ((md, "runs/\\x1b\\]0;pwned\\x07evil\\x1b\\[2J"), (page, HOSTILE_SHOWN)):
         assert "\x1b" not in text and "\x07" not in text
-        assert text.count("runs/\\x1b]0;pwned\\x07evil\\x1b[2J") == 2  # both places, escaped
+        assert text.count(shown) == 2  # both places, escaped (brackets as Markdown literals)
         assert "<script>" not in text and "<b>bold</b>" not in text
     assert "&lt;script>alert(1)&lt;/script>" in md
     assert "&lt;script&gt;alert(1)&lt;/script&gt;" in page

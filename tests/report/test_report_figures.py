@@ -61,7 +61,7 @@ def test_radar_png(tmp_path):
     fig = plot_radar(_per_class(np.random.default_rng(0)), SENSORS, COLORS)
     # M2 has 3 classes, M1 4: every (machine, scenario) chart is drawn
     assert sum(ax.name == "polar" for ax in fig.axes) == 6
-    assert_real_png(save_figure(fig, tmp_path / "radar.png"))
+    assert_real_png(save_figure(fig, tmp_path, "radar.png"))
 
 
 def test_worst_cells_skip_the_reference():
@@ -96,7 +96,7 @@ def test_confusion_rows_are_normalised(tmp_path):
     shares = fig.axes[0].images[0].get_array()
     assert np.allclose(shares, [[0.8, 0.2], [0.0, 1.0]])
     assert "0.80" in [t.get_text() for t in fig.axes[0].texts]
-    assert_real_png(save_figure(fig, tmp_path / "confusion.png"))
+    assert_real_png(save_figure(fig, tmp_path, "confusion.png"))
 
 
 def test_tsne_one_panel_per_sensor_with_lowest_severity(tmp_path):
@@ -127,7 +127,7 @@ def test_tsne_one_panel_per_sensor_with_lowest_severity(tmp_path):
     }
     fig = plot_tsne(chosen, SENSORS, max_points=100)
     assert [ax.get_title() for ax in fig.axes] == ["ref (100 windows)", "mems-a (100 windows)"]
-    assert_real_png(save_figure(fig, tmp_path / "tsne.png"))
+    assert_real_png(save_figure(fig, tmp_path, "tsne.png"))
 
 
 def test_overlay_marks_full_scale_of_clipped_profiles_only(tmp_path):
@@ -149,7 +149,7 @@ def test_overlay_marks_full_scale_of_clipped_profiles_only(tmp_path):
     assert labels == ["ref", "mems-a (clipped)", "mems-b"]
     assert ax_t.get_xlim()[1] <= 85  # about 80 ms shown, not the whole 500 ms
     assert fig.axes[1].get_xscale() == "log" and fig.axes[1].get_yscale() == "log"
-    assert_real_png(save_figure(fig, tmp_path / "overlay.png"))
+    assert_real_png(save_figure(fig, tmp_path, "overlay.png"))
 
 
 def test_noise_figure_from_noise_check(registry, tmp_path):
@@ -157,4 +157,4 @@ def test_noise_figure_from_noise_check(registry, tmp_path):
     fig = plot_noise(checks, sensor_colors(["adxl345", "adxl357"], None))
     labels = fig.axes[1].get_legend_handles_labels()[1]
     assert any(label.startswith("adxl345: NSD 2") for label in labels)  # ~290 µg/√Hz
-    assert_real_png(save_figure(fig, tmp_path / "noise.png"))
+    assert_real_png(save_figure(fig, tmp_path, "noise.png"))

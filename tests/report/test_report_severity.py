@@ -10,6 +10,7 @@ import pytest
 from typer.testing import CliRunner
 
 from sdt_framework.cli.main import app
+from sdt_framework.labels import slug
 
 from .conftest import assert_real_png
 
@@ -60,9 +61,9 @@ def test_report_has_the_severity_section_and_captioned_spectra(full_report) -> N
     assert "### Zone agreement" in section and "iso20816-1-typical-low" in section
     assert "### Alarms (ISO 20816-1 criterion II)" in section
     # ch4 is in the small folder: the pump bearing's envelope (6308 lines) is drawn
-    assert_real_png(folder / "figures" / "envelope_Motor-2_bearing_pump.png")
+    assert_real_png(folder / "figures" / f"{slug('envelope', 'Motor-2', 'bearing pump')}.png")
     caption = next(line for line in section.splitlines() if "6308 lines" in line and line[0] == "*")
     for words in ("one-sided peak amplitude", "Hann window", "RBW", "unit g"):
         assert words in caption
-    assert_real_png(folder / "figures" / "velocity_Motor-2.png")
-    assert_real_png(folder / "figures" / "waterfall_Motor-2.png")
+    assert_real_png(folder / "figures" / f"{slug('velocity', 'Motor-2')}.png")
+    assert_real_png(folder / "figures" / f"{slug('waterfall', 'Motor-2')}.png")
