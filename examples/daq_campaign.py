@@ -7,7 +7,7 @@ a healthy folder carries no severity (``healthy/run1.tdms`` beside
 (group ``Vibration``, the synthetic pump's ch1 resampled from 20 kHz to
 25.6 kHz) beside what a logger records with it (group ``Process``): a bearing
 temperature in degC and a once-per-revolution tachometer in V. These two are
-stand-ins (a constant 41 degC, a 5 V pulse at 24.5 Hz), not generated signals:
+stand-ins (a constant 41 degC at 100 Hz, a 5 V pulse at 24.5 Hz), not generated signals:
 they are there because real files carry such channels, and the manifest must
 leave them out. Used by README.md ("Your own data") and the `sdt dataset
 manifest --help` examples::
@@ -34,7 +34,7 @@ from sdt_framework.data import open_synthetic
 
 DAQ_RATE_HZ = 25600.0  # an NI 9234's default: 51.2 kHz / 2
 UP, DOWN = 32, 25  # 20 kHz * 32 / 25 = 25.6 kHz
-TEMPERATURE_RATE_HZ = 10.0
+TEMPERATURE_RATE_HZ = 100.0
 
 
 def _process_channels(n: int, seconds: float) -> list[ChannelObject]:
