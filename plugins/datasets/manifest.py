@@ -1,4 +1,4 @@
-"""Any recordings described by a CSV/Parquet manifest (CSV, NPY or MAT signal files)."""
+"""Any recordings described by a CSV/Parquet manifest (files of any registered signal reader)."""
 
 from __future__ import annotations
 

@@ -103,7 +103,8 @@ def manifest(
         typer.Option(
             "--pattern",
             help="Path template below FOLDER with {machine} {speed} {condition} {severity} "
-            "{run} {channel}, e.g. '{machine}/{condition} {severity}/{run}/{channel}.tdms'.",
+            "{run} {channel} ({severity?}: may be missing), e.g. "
+            "'{machine}/{condition} {severity?}/{run}/{channel}.tdms'.",
         ),
     ],
     out: Annotated[Path, typer.Option("--out", help="Manifest to write (.csv).")],
@@ -119,15 +120,22 @@ def manifest(
 
     Each file matching --pattern gives one row per signal it holds. With {channel}
     in the pattern a file's signals are that channel's acquisitions; without it,
-    each signal is a channel named by the file. A severity of '-' is healthy.
-    Linked folders are followed (loops are not); every file or folder not used
-    (no match, no reader, a broken link, a FIFO) is listed with the reason. A
-    DAQ campaign's tree reads with a pattern such as
-    '{machine}/{condition} {severity}/{run}/{channel}.tdms'.
+    each signal is a channel named by the file. A field written {severity?} (also
+    {machine?}, {speed?}) may be missing, so healthy folders without a severity
+    ('healthy' beside 'bearing 2', or 'healthy/run1' beside 'bearing/2/run1') read
+    with one pattern; a severity of '-' is healthy too. A signal whose file gives a
+    unit that is not an acceleration (degC, V, Pa) is left out, counted in a note.
+    Linked folders are followed (loops are not); every file or folder not used (no
+    match, no reader, a broken link, a FIFO) is listed with the reason.
 
     Example:
 
-      sdt dataset manifest tests/data/readers --pattern '{condition}_{run}.uff' --out uff.csv
+      python examples/daq_campaign.py campaign   # a campaign's TDMS files, for the lines below
+
+      sdt dataset manifest campaign --out campaign.csv \\
+        --pattern '{machine}/{condition} {severity?}/{run}.tdms'
+
+      sdt benchmark --quick --data campaign.csv
     """
     from ..data.manifest_build import build_manifest, manifest_csv
     from .guards import check_output_file, os_errors

@@ -16,7 +16,8 @@ machine (optional)        default ``"machine"``
 units (optional)          ``g`` (default), ``mg`` or ``m/s^2``
 variable (optional)       the signal in the file (CSV column, MATLAB variable,
                           TDMS ``GROUP/CHANNEL``, UFF58 number, WAV ``chN``,
-                          LVM channel, IDE ``CHANNEL:AXIS``)
+                          LVM channel, IDE ``CHANNEL:AXIS``) as the file names
+                          it, spaces included (:func:`.manifest_files.probe_row`)
 speed (optional)          operating point label
 full_scale_g (optional)   a reader's option: g at full scale of an integer WAV
 ========================  =====================================================
@@ -30,9 +31,9 @@ Rows sharing (machine, recording_id, channel) are the acquisitions of one
 NLN-EMP does: ``healthy 1`` exists on every motor) and both are read, each as
 its own recording. A missing or unreadable file is reported in ``skipped``
 with the manifest line; an unknown column, a bad value (a severity of 1.7),
-an exact duplicate row or a signal file listed twice is an :class:`SDTError`
-naming the lines: counting the same samples twice would leak them across a
-train/test split.
+an exact duplicate row or a signal listed twice is an :class:`SDTError`
+naming the lines (:mod:`.manifest_checks`): counting the same samples twice
+would leak them across a train/test split.
 """
 
 from __future__ import annotations
@@ -48,6 +49,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..inputs import not_regular
+from .manifest_checks import refuse_identical, refuse_shared_ids, refuse_signal_twice
 from .manifest_files import probe_row, reconcile
 from .manifest_table import ManifestRow, read_manifest_rows
 from .recording import (
@@ -116,7 +118,7 @@ def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
         "rate": rate,
         "severity": _severity(where, _cell(row, "severity")),
         "units": units,
-        "variable": _cell(row, "variable") or None,
+        "variable": row.cells.get("variable", "") if _cell(row, "variable") else None,
         "machine": _cell(row, "machine") or "machine",
         "speed": _cell(row, "speed") or None,
         "condition": _cell(row, "condition"),
@@ -126,31 +128,6 @@ def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
         "where": row.where,
         "cells": row.cells,
     }
-
-
-def _refuse_duplicates(manifest: Path, header: list[str], rows: list[ManifestRow]) -> None:
-    """An identical row, or one signal (file and variable) on two rows, is an error."""
-    seen: dict[tuple[str, ...], str] = {}
-    for row in rows:
-        key = tuple(_cell(row, name) for name in header)
-        if key in seen:
-            raise SDTError(
-                f"manifest {manifest}: {seen[key]} and {row.where} are identical; remove one "
-                f"(a repeated row would count the same samples twice)"
-            )
-        seen[key] = row.where
-    files: dict[tuple[Path, str], str] = {}
-    for row in rows:
-        file = Path(_cell(row, "path")).expanduser()
-        file = Path(os.path.realpath(file if file.is_absolute() else manifest.parent / file))
-        key2 = (file, _cell(row, "variable"))
-        if key2 in files:
-            variable = f" (variable {quote(key2[1])})" if key2[1] else ""
-            raise SDTError(
-                f"manifest {manifest}: {files[key2]} and {row.where} both read {file}{variable}; "
-                f"list each signal once (twice would count the same samples twice)"
-            )
-        files[key2] = row.where
 
 
 def open_manifest(
@@ -186,8 +163,9 @@ def open_manifest(
             f"manifest {manifest}: missing required column(s) {', '.join(map(repr, missing))}"
         )
     all_fields = [_row_fields(manifest, row) for row in rows]
-    _refuse_duplicates(manifest, columns, rows)
+    refuse_identical(manifest, columns, rows)
     groups: dict[tuple[str, str, str], list[dict[str, Any]]] = {}
+    signals: dict[tuple[str, str], str] = {}
     skipped: list[Skipped] = []
     notes: list[str] = []
     other_notes: list[str] = []
@@ -207,13 +185,14 @@ def open_manifest(
             continue
         except SignalTypeError as exc:
             raise SignalTypeError(f"{exc} (manifest {manifest} {fields['where']})") from None
+        refuse_signal_twice(manifest, signals, fields, info)
         reconcile(fields, info, reader, manifest)
         fields["shape"], fields["load"] = info.shape, (reader.read, tuple(options.items()))
         if info.note:
             (notes if reader.name == "csv" else other_notes).append(info.note)
         key = (fields["machine"], fields["run"], fields["channel"])
         groups.setdefault(key, []).append(fields)
-    _refuse_shared_ids(manifest, groups)
+    refuse_shared_ids(manifest, groups)
     recordings = []
     for (machine, run, channel), rows in groups.items():
         first = rows[0]
@@ -261,21 +240,6 @@ def open_manifest(
     if validate:
         dataset.validate()
     return dataset
-
-
-def _refuse_shared_ids(
-    manifest: Path, groups: dict[tuple[str, str, str], list[dict[str, Any]]]
-) -> None:
-    """Two groups whose ids collide ('/' inside a name): refuse, naming a line of each."""
-    seen: dict[str, str] = {}
-    for (machine, run, channel), rows in groups.items():
-        rid = f"{machine}/{run}/{channel}"
-        if rid in seen:
-            raise SDTError(
-                f"manifest {manifest}: {seen[rid]} and {rows[0]['where']} give the same "
-                f"recording id {quote(rid, 60)}; avoid '/' in machine, recording_id and channel"
-            )
-        seen[rid] = rows[0]["where"]
 
 
 def _load_rows(rows: tuple[tuple[Path, str | None, str, Any, tuple], ...]) -> np.ndarray:

@@ -1,33 +1,36 @@
 """Build a manifest from a folder tree: labels from the paths, rate and units from the files.
 
-A template such as ``{machine}/{condition} {severity}/{run}/{channel}.tdms``
-is matched against every file's path relative to the folder (``/``
-separated). Fields: ``machine``, ``speed``, ``condition``, ``severity``,
-``run`` and ``channel``; each matches one or more characters within one
-folder or file name (``severity``: a whole number in ASCII digits ``0-9``, or
-``-`` for healthy; a Unicode digit class would take an Arabic-Indic ``٣`` for
-3), the rest of the template literally. ``condition`` and ``run`` are
-required; an unknown field (``{cond}``) or a lone brace is refused naming it
-and the known ones.
+The template (:mod:`.manifest_pattern`, e.g.
+``{machine}/{condition} {severity?}/{run}/{channel}.tdms``) gives each
+file's labels from its path. Each matched file is scanned by its registered
+reader (:func:`~sdt_framework.data.signal_files.scan_file`) and gives one
+row per signal it holds: its ``variable`` written as the file names it
+(spaces included: the manifest reader matches it so), the file's rate and
+units (a format that holds no rate takes ``rate_hz``). When the template
+names the channel, a file's signals are that channel's acquisitions (rows
+sharing machine, run and channel are one recording's acquisitions in a
+manifest); when it does not, each signal is its own channel, named by the
+file.
 
-Each matched file is scanned by its registered reader
-(:func:`~sdt_framework.data.signal_files.scan_file`) and gives one row per
-signal it holds: its ``variable``, the file's rate and units (a format that
-holds no rate takes ``rate_hz``). When the template names the channel, a
-file's signals are that channel's acquisitions (rows sharing machine, run and
-channel are one recording's acquisitions in a manifest); when it does not,
-each signal is its own channel, named by the file. Every entry of the tree
-is accounted for (:mod:`.manifest_walk`: linked folders followed, loops,
-broken links and FIFOs named): files that do not match, that no reader reads,
-or that are not regular files are returned with the reason, never dropped
-silently. Each run and channel is its own recording (:mod:`.manifest_ids`).
-Cells are written spreadsheet-safe (:mod:`sdt_framework.csv_cells`).
+A DAQ file often logs more than vibration: a temperature in ``degC``, a
+tachometer in ``V``, a pressure in ``hPa`` beside the ``g`` channels. A
+signal whose file gives a unit that is not an acceleration is not put in the
+manifest (the reader would refuse the whole manifest for it); the channels so
+skipped are counted by unit in a note, and a file left with none is listed as
+not used. A signal whose file states no unit is taken, in g.
+
+Every entry of the tree is accounted for (:mod:`.manifest_walk`: linked
+folders followed, loops, broken links and FIFOs named): files that do not
+match, that no reader reads, or that are not regular files are returned with
+the reason, never dropped silently. Each run and channel is its own recording
+(:mod:`.manifest_ids`). Cells are written spreadsheet-safe
+(:mod:`sdt_framework.csv_cells`).
 """
 
 from __future__ import annotations
 
 import math
-import re
+from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -36,19 +39,16 @@ from typing import Any
 from ..csv_cells import escape_cell
 from ..errors import SDTError
 from .manifest_ids import Matched, name_recordings
+from .manifest_pattern import compile_template
 from .manifest_walk import walk_tree
 from .readers import SignalInfo, acceleration_units
 from .signal_files import scan_file
 from .tokens import quote
 
-__all__ = ["FIELDS", "BuiltManifest", "build_manifest", "compile_template", "manifest_csv"]
+__all__ = ["BuiltManifest", "build_manifest", "manifest_csv"]
 
-FIELDS = ("machine", "speed", "condition", "severity", "run", "channel")
-REQUIRED_FIELDS = ("condition", "run")
 COLUMNS = ("path", "sampling_rate_hz", "condition", "severity", "recording_id", "channel",
            "machine", "units", "variable", "speed", "full_scale_g")  # fmt: skip
-_FIELD = re.compile(r"\{([^{}]*)\}")
-_KNOWN = ", ".join("{" + f + "}" for f in FIELDS)
 
 
 @dataclass
@@ -61,66 +61,6 @@ class BuiltManifest:
     matched: int = 0
     unmatched: list[tuple[str, str]] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
-
-
-def _segment_regex(segment: str, template: str) -> str:
-    out, pos = [], 0
-    for found in _FIELD.finditer(segment):
-        name = found.group(1)
-        value = "[0-9]+|-" if name == "severity" else "[^/]+?"  # not \d: ٣ is no level
-        out += [re.escape(segment[pos : found.start()]), f"(?P<{name}>{value})"]
-        pos = found.end()
-    return "".join([*out, re.escape(segment[pos:])])
-
-
-def compile_template(template: str) -> list[tuple[str, re.Pattern[str]]]:
-    """One compiled pattern per ``/``-separated part of ``template``; bad templates refused."""
-    names = _FIELD.findall(template)
-    unknown = [name for name in dict.fromkeys(names) if name not in FIELDS]
-    if unknown:
-        raise SDTError(
-            f"--pattern {quote(template, 80)}: unknown field(s) "
-            f"{', '.join('{' + quote(n, 40)[1:-1] + '}' for n in unknown)}; the fields are {_KNOWN}"
-        )
-    stray = _FIELD.sub("", template)
-    if "{" in stray or "}" in stray:
-        raise SDTError(
-            f"--pattern {quote(template, 80)}: a {'{' if '{' in stray else '}'!r} without its "
-            f"pair; write each field as {{name}}, one of {_KNOWN}"
-        )
-    missing = [f for f in REQUIRED_FIELDS if f not in names]
-    if missing:
-        raise SDTError(
-            f"--pattern {quote(template, 80)}: names no {{{missing[0]}}}; a manifest needs the "
-            f"condition and the run of every file"
-        )
-    repeated = sorted({n for n in names if names.count(n) > 1})
-    if repeated:
-        raise SDTError(f"--pattern {quote(template, 80)}: field {{{repeated[0]}}} appears twice")
-    parts = template.strip("/").split("/")
-    return [(part, re.compile(_segment_regex(part, template))) for part in parts]
-
-
-def _match(
-    parts: Sequence[str], patterns: list[tuple[str, re.Pattern[str]]]
-) -> dict[str, str] | str:
-    """The fields of a path, or why it does not match."""
-    if len(parts) != len(patterns):
-        return f"{len(parts)} path levels, the pattern has {len(patterns)}"
-    fields: dict[str, str] = {}
-    for part, (segment, pattern) in zip(parts, patterns, strict=True):
-        found = pattern.fullmatch(part)
-        if found is None:
-            digits = "{severity}" in segment and any(c.isdigit() and not c.isascii() for c in part)
-            hint = "; {severity} is ASCII digits 0-9 or '-'" if digits else ""
-            return f"{quote(part, 60)} does not match {quote(segment, 60)}{hint}"
-        fields.update({name: value.strip() for name, value in found.groupdict().items()})
-    empty = [name for name, value in fields.items() if not value]
-    if empty:  # the manifest reader strips labels: a blank one would be no label
-        return f"{{{empty[0]}}} is only spaces"
-    severity = fields.get("severity", "")
-    fields["severity"] = "" if severity == "-" else severity
-    return fields
 
 
 def _row(m: Matched, info: SignalInfo, channel: str, out_dir: Path,
@@ -139,7 +79,7 @@ def _row(m: Matched, info: SignalInfo, channel: str, out_dir: Path,
         "recording_id": m.run_id,
         "channel": channel,
         "machine": m.fields.get("machine", ""),
-        "units": (acceleration_units(info.units) if info.units else None) or "",
+        "units": acceleration_units(info.units) or "",
         "variable": "" if info.variable is None else str(info.variable),
         "speed": m.fields.get("speed", ""),
         "full_scale_g": m.full_scale_g,
@@ -149,6 +89,30 @@ def _row(m: Matched, info: SignalInfo, channel: str, out_dir: Path,
 def _positive(option: str, value: float | None) -> None:
     if value is not None and not (math.isfinite(value) and value > 0):
         raise SDTError(f"{option} {value:g}: give a finite number above 0")
+
+
+def _not_acceleration(info: SignalInfo) -> bool:
+    """The file states a unit, and it is not an acceleration (degC, V, Pa...)."""
+    return bool(info.units and info.units.strip()) and acceleration_units(info.units) is None
+
+
+def _skipped_note(skipped: list[tuple[str, SignalInfo]]) -> list[str]:
+    """One note counting the signals left out for their units, by unit."""
+    if not skipped:
+        return []
+    units = Counter(str(info.units).strip() for _, info in skipped)
+    counts = ", ".join(f"{quote(unit)}: {n}" for unit, n in units.most_common())
+    where, info = skipped[0]
+    files = len({w for w, _ in skipped})
+    return [
+        f"{_count(len(skipped), 'signal')} skipped: not an acceleration unit ({counts}), in "
+        f"{_count(files, 'file')} (e.g. {quote(info.variable, 60)} in {where}); "
+        f"`sdt dataset inspect FILE` lists each signal with its units"
+    ]
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}{'' if n == 1 else 's'}"
 
 
 def build_manifest(
@@ -162,7 +126,7 @@ def build_manifest(
 ) -> BuiltManifest:
     """Rows for every file under ``folder`` that matches ``template``; paths relative to
     ``out_dir`` (the manifest's folder) where they can be."""
-    patterns = compile_template(template)
+    compiled = compile_template(template)
     _positive("--rate-hz", rate_hz)
     _positive("--full-scale-g", full_scale_g)
     if not folder.is_dir():
@@ -170,9 +134,10 @@ def build_manifest(
     built = BuiltManifest()
     tree = walk_tree(folder)
     matched: list[Matched] = []
+    skipped: list[tuple[str, SignalInfo]] = []
     options = {"full_scale_g": full_scale_g} if full_scale_g is not None else {}
     for relative, file in tree.files:
-        fields = _match(relative.parts, patterns)
+        fields = compiled.match(relative.parts)
         if isinstance(fields, str):
             built.unmatched.append((relative.as_posix(), fields))
             continue
@@ -181,10 +146,19 @@ def build_manifest(
             reader, infos = scan_file(file, readers)
             if "full_scale_g" in reader.options:
                 infos = reader.scan(file, **options)
+            other = [info for info in infos if _not_acceleration(info)]
+            infos = [info for info in infos if not _not_acceleration(info)]
+            skipped += [(relative.as_posix(), info) for info in other]
+            if "full_scale_g" in reader.options:
                 for info in infos:  # a probe refuses what the row could not read
                     reader.probe(file, info.variable, **options)
         except SDTError as exc:  # the reason without the file's path, which the line names
             built.unmatched.append((relative.as_posix(), str(exc).removeprefix(f"{file}: ")))
+            continue
+        if not infos:
+            units = ", ".join(dict.fromkeys(quote(str(i.units).strip()) for i in other))
+            why = f"no acceleration signal: its {_count(len(other), 'signal')} are in {units}"
+            built.unmatched.append((relative.as_posix(), why))
             continue
         if rate_hz is None and any(info.rate_hz is None for info in infos):
             why = f"a {reader.label} file holds no rate; give --rate-hz"
@@ -193,7 +167,8 @@ def build_manifest(
         scale = repr(full_scale_g) if options and "full_scale_g" in reader.options else ""
         matched.append(Matched(relative, file, fields, list(infos), scale))
     built.unmatched = sorted(built.unmatched + tree.left_out)
-    built.notes = name_recordings(matched, template, "channel" in _FIELD.findall(template))
+    built.notes = name_recordings(matched, template, "channel" in compiled.names)
+    built.notes += _skipped_note(skipped)
     built.files = len(matched)
     built.rows = [
         _row(m, info, channel, out_dir, rate_hz)

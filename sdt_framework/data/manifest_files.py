@@ -18,6 +18,7 @@ from typing import Any
 
 from ..errors import SDTError
 from .readers import SignalInfo, acceleration_units
+from .recording import DataFileError
 from .signal_files import reader_for
 from .tokens import quote
 
@@ -25,10 +26,31 @@ __all__ = ["probe_row", "reconcile"]
 
 
 def probe_row(fields: dict[str, Any], readers: Any) -> tuple[Any, SignalInfo, dict[str, str]]:
-    """(reader, signal, reader options) of a row; a bad file raises ``DataFileError``."""
+    """(reader, signal, reader options) of a row; a bad file raises ``DataFileError``.
+
+    The row's ``variable`` names the signal whose name is the same, spaces
+    included (``sdt dataset manifest`` writes names so); where no signal has
+    that name, the one signal whose name is the same without leading and
+    trailing spaces (a name typed by hand, or trimmed by a spreadsheet), and
+    ``fields["variable"]`` becomes its name in the file."""
     reader = reader_for(fields["file"], readers)
     options = {k: fields["cells"][k] for k in reader.options if fields["cells"].get(k)}
-    return reader, reader.probe(fields["file"], fields["variable"], **options), options
+    variable = fields["variable"]
+    try:
+        return reader, reader.probe(fields["file"], variable, **options), options
+    except DataFileError as exc:
+        if variable is None:
+            raise
+        unmatched = exc
+    alike = [
+        info.variable
+        for info in reader.scan(fields["file"], **options)
+        if info.variable is not None and str(info.variable).strip() == variable.strip()
+    ]
+    if len(alike) != 1 or alike[0] == variable:
+        raise unmatched
+    fields["variable"] = alike[0]
+    return reader, reader.probe(fields["file"], alike[0], **options), options
 
 
 def reconcile(fields: dict[str, Any], info: SignalInfo, reader: Any, manifest: Path) -> None:
