@@ -22,10 +22,46 @@ import pandas as pd
 from ..edge.cells import cell
 from ..edge.life_objective import point_life
 from ..edge.node import NodeSettings
+from ..edge.node_timing import IntervalError, node_timing
+from ..errors import SDTError
 from ..specs import FeatureSetSpec, SensorSpec
 from .target import Target
 
-__all__ = ["point_lives", "with_battery_life"]
+__all__ = ["check_report_interval", "point_lives", "with_battery_life"]
+
+
+def check_report_interval(
+    target: Target,
+    sensors: Sequence[SensorSpec],
+    feature_set: FeatureSetSpec,
+    window_s: float,
+    where: str,
+) -> None:
+    """Refuse, before any run, a ``report_interval`` no point's node can keep.
+
+    Asked when the target wants a battery life or names the interval: an
+    interval shorter than one acquisition plus its computation and uplink, or
+    one that breaks the duty cycle, is one line naming the sweep file and
+    ``sweep.target.report_interval``. Other reasons a point has no life (no
+    supply current, a report no uplink carries) stay per point (``life_note``).
+    """
+    asked = target.min_battery_life_years is not None
+    if not asked and "report_interval" not in target.model_fields_set:
+        return
+    settings = NodeSettings(interval_s=target.interval_s, window_s=window_s)
+    for spec in sensors:
+        if spec.sampling_rate_hz == "native":
+            continue
+        on = spec.supply.turn_on_ms.value if spec.supply is not None else None
+        try:
+            node_timing(float(spec.sampling_rate_hz), (on or 0.0) / 1e3, feature_set, settings)
+        except IntervalError as exc:
+            raise SDTError(
+                f"{where}: sweep.target.report_interval = {target.report_interval!r}: "
+                f"{exc.problem}; lengthen report_interval"
+            ) from None
+        except SDTError:
+            continue
 
 
 def point_lives(
