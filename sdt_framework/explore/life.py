@@ -4,12 +4,14 @@
 node built around a point last at least five years on its ``battery`` (2xAA by
 default) sending one report per ``report_interval`` (10 min by default). The
 life is the whole node's (:mod:`sdt_framework.edge.node`: the accelerometer
-measuring and in standby, the microcontroller's FFT of the point's window at
-its rate, the LoRaWAN uplink and receive windows, sleep), at the protocol's
-window length, computed from the point's own sensor specification. A point
-whose sensor has no measuring supply current on record has no life: NaN, with
-the reason in ``life_note``, never a figure filled in, so it cannot meet a life
-constraint. This module attaches the life to the exploration table, one value
+measuring and in standby, the microcontroller awake through the window and
+its FFT of the point's window at its rate, the LoRaWAN uplink and receive
+windows, the regulator, sleep), at the protocol's window length, computed from
+the point's own sensor specification, capped at the cell's shelf life
+(``life_note`` then says so). A point whose sensor has no measuring supply
+current on record has no life: NaN, with the reason in ``life_note``, never a
+figure filled in, so it cannot meet a life constraint. A ``report_interval``
+no node can keep is refused before any run (:func:`check_report_interval`). This module attaches the life to the exploration table, one value
 per point; :mod:`.objectives` decides pass or fail.
 """
 

@@ -244,3 +244,13 @@ def test_the_life_constraint_can_fail_on_every_cell(registry, battery) -> None:
     table = _tidy({r: life for r in RATES}, F1)
     judged = verdicts(table, FIELDS, target)
     assert not judged["meets_life"].any() and not judged["meets"].any()
+
+
+def test_a_life_the_shelf_life_caps_says_so(registry) -> None:
+    """On a D cell at 10 min the drain alone gives 27.6 years; the cell is rated for 20."""
+    target = Target(max_loss=0.05, battery="D")
+    lives = point_lives(
+        [registry.sensor("adxl345")], registry.feature_set("paper8"), WINDOW_S, target
+    )
+    assert lives["battery_life_years"].iloc[0] == 20.0
+    assert lives["life_note"].iloc[0] == "capped at the D cell's 20-year shelf life"
