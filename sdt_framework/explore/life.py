@@ -11,8 +11,9 @@ the point's own sensor specification, capped at the cell's shelf life
 (``life_note`` then says so). A point whose sensor has no measuring supply
 current on record has no life: NaN, with the reason in ``life_note``, never a
 figure filled in, so it cannot meet a life constraint. A ``report_interval``
-no node can keep is refused before any run (:func:`check_report_interval`). This module attaches the life to the exploration table, one value
-per point; :mod:`.objectives` decides pass or fail.
+no node can keep is refused before any run (:func:`check_report_interval`).
+This module attaches the life to the exploration table, one value per point;
+:mod:`.objectives` decides pass or fail.
 """
 
 from __future__ import annotations
