@@ -103,3 +103,20 @@ def test_no_life_above_the_stated_shelf_life_at_any_interval(registry, paper8, s
                 assert budget.life_years <= cap, (sensor_name, name, interval, axes)
                 if budget.life_capped:
                     assert any("shelf life" in note for note in budget.notes)
+
+
+@pytest.mark.parametrize("interval", ["10min", "1h", "1d"])
+def test_the_printed_life_never_exceeds_the_stated_shelf_life(interval):
+    """What `sdt budget --sensor` prints: before, a D cell at 1 h read "> 100 years"."""
+    from typer.testing import CliRunner
+
+    from sdt_framework.cli.main import app
+
+    for name, cap in STATED_SHELF_LIFE.items():
+        args = ["budget", "--sensor", "adxl345", "--battery", name, "--interval", interval]
+        result = CliRunner().invoke(app, args, env={"COLUMNS": "200"})
+        assert result.exit_code == 0, result.output
+        printed = re.search(r"battery life (\S+) years", result.stdout)[1]
+        assert printed != "> 100" and float(printed) <= cap, (name, interval, printed)
+        if float(printed) == cap:
+            assert f"capped at the {name} cell's rated shelf life" in result.stdout
