@@ -55,7 +55,7 @@ ALLOWED: dict[str, set[str]] = {
     "data": _BASE | _IO | {"reader_table"},
     "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
     "features": {"arguments", "csv_cells", "errors", "io", "specs"},
-    "edge": {"errors", "specs"},
+    "edge": {"errors", "specs", "toml_files"},
     "validation": _IO | {"chain", "specs", "stages"},
     "api": {"arguments", "chain", "errors", "features", "registry", "specs"},
     "conformance": {"chain", "errors", "features", "parts", "registry", "specs", "stages"},

@@ -89,6 +89,8 @@ def explore(
     require_regular_file(sweep_file, "sweep file")
     with building(f"reading the sweep file {sweep_file}", "shorten its ties and levels"):
         sweep, protocol = load_sweep(sweep_file)
+    for note in sweep.target.life_notes():
+        err_console.print(f"note: {sweep_file}: {note}", highlight=False, soft_wrap=True)
     given = {"data": data, "jobs": jobs, "backend": backend, "scheduler": scheduler}
     overrides: dict[str, Any] = {k: v for k, v in given.items() if v is not None}
     if quick:

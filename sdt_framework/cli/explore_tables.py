@@ -104,7 +104,8 @@ def _print_battery_life(pareto: Any, fields: list[str], target: Any) -> None:
         if life != life:
             text = f"unknown, fails: {row.get('life_note') or 'no supply figures on record'}"
         else:
-            text = f"{life:.3f}{'' if life >= threshold else ' fails'}"
+            capped = " (shelf-life cap)" if row.get("life_note") else ""
+            text = f"{life:.3f}{capped}{'' if life >= threshold else ' fails'}"
         rows.append([*(f"{row[f]:g}" for f in fields), text])
     title = f"Battery life per point, years ({target.node()}; target >= {threshold:g})"
     table(title, [*fields, "battery life (years)"], rows)

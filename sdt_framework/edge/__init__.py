@@ -13,8 +13,12 @@ time_on_air_s, payload_symbols, symbol_time_s, low_data_rate_optimize
     The Semtech SX127x time-on-air formula.
 region, REGIONS, Region, DataRate, phy_payload_bytes, OVERHEAD_BYTES
     LoRaWAN framing (13 bytes) and the EU868 / US915 data-rate plans.
-radio, RADIOS, Radio, energy_per_message_j
-    Transmit energy from a current/voltage model (SX1276 datasheet defaults).
+radio, RADIOS, Radio, energy_per_message_j, DEFAULT_RADIO
+    Radio profiles (radios.toml: the bare SX1276 and SX127x/SX126x modules, each
+    current with its datasheet) and transmit energy from them.
+node.node_budget, cells.cell (submodules)
+    The whole node's charge per report and its battery life, capped at the
+    cell's shelf life (node.toml, cells.toml hold every figure's source).
 parse_interval, format_interval
     ``"10min"`` <-> 600 s.
 """

@@ -21,21 +21,30 @@ _UNITS = {
 _PATTERN = re.compile(r"^\s*(?P<number>\d+(?:\.\d*)?|\.\d+)\s*(?P<unit>[a-z]*)\s*$")
 
 
-def parse_interval(text: str | float) -> float:
-    """Seconds in an interval such as ``"10min"``; a bare number is seconds.
+def parse_interval(text: str | float, what: str = "interval") -> float:
+    """Seconds in a duration written with its unit, such as ``"10min"``.
 
-    Units: s, sec, min, h, hr, d, day. ``"m"`` is refused as ambiguous
-    (minutes or metres?): write ``min``.
+    Units: s, sec, min, h, hr, d, day. Text without a unit (``"10"``) is
+    refused: ten seconds and ten minutes are both plausible reporting
+    intervals, so a guess could be off by 60 times; ``"m"`` is refused as
+    ambiguous (minutes or metres?): write ``min``. A Python number is seconds.
+    ``what`` names the value in the error (``"interval"``, ``"--window"``).
     """
     if isinstance(text, int | float):
         seconds = float(text)
     else:
         match = _PATTERN.match(str(text).lower())
-        if not match or match["unit"] not in {"", *_UNITS}:
-            raise SDTError(f"interval {text!r} is not a duration; write e.g. 30s, 10min, 1h or 1d")
-        seconds = float(match["number"]) * _UNITS.get(match["unit"], 1.0)
+        if match and not match["unit"]:
+            number = match["number"]
+            raise SDTError(
+                f"{what} {text!r} has no unit; write {number}s (seconds), {number}min, "
+                f"{number}h or {number}d"
+            )
+        if not match or match["unit"] not in _UNITS:
+            raise SDTError(f"{what} {text!r} is not a duration; write e.g. 30s, 10min, 1h or 1d")
+        seconds = float(match["number"]) * _UNITS[match["unit"]]
     if not (math.isfinite(seconds) and seconds > 0):
-        raise SDTError(f"interval {text!r} must be longer than zero")
+        raise SDTError(f"{what} {text!r} must be longer than zero")
     return seconds
 
 

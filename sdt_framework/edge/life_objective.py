@@ -20,7 +20,7 @@ import numpy as np
 from ..errors import SDTError
 from ..specs import FeatureSetSpec, SensorSpec
 from .cells import Cell, cell
-from .node import NodeSettings, battery_life_years
+from .node import NodeSettings, node_budget
 
 __all__ = ["non_dominated", "point_life", "point_lives"]
 
@@ -31,17 +31,21 @@ def point_life(
     battery: Cell,
     settings: NodeSettings | None = None,
 ) -> tuple[float, str]:
-    """Battery life in years and ``""``; or NaN and why it cannot be computed (never filled in)."""
+    """Battery life in years and a note; or NaN and why it cannot be computed (never filled in).
+
+    The note is ``""``, or, for a life the cell's shelf life caps, the cap's words.
+    """
     supply = sensor.supply
     if supply is None:
         return math.nan, "no supply figures on record"
     if supply.measure_ua.value is None:
         return math.nan, f"no measuring supply current on record ({supply.measure_ua.cited()})"
     try:
-        years = battery_life_years(sensor, feature_set, battery, settings)
-    except SDTError as exc:  # e.g. an interval too short for this point's window
+        budget = node_budget(sensor, feature_set, battery, settings)
+    except SDTError as exc:  # e.g. a report no uplink of the region carries
         return math.nan, str(exc)
-    return (math.nan, "no measuring supply current on record") if years is None else (years, "")
+    cap = f"capped at the {battery.name} cell's {battery.shelf_life_years:g}-year shelf life"
+    return budget.life_years, cap if budget.life_capped else ""
 
 
 def point_lives(

@@ -1,24 +1,30 @@
 """The whole node's charge per report, one stage per consumer, and the battery's life.
 
 Every reporting interval T the node wakes its accelerometer, records one
-window of W seconds on every axis, computes the features, sends one LoRaWAN
-class A uplink and listens in RX1 and RX2, and sleeps the rest of the time.
-Per report, with I the supply current of each consumer (A) and t its time (s):
+window of W seconds on every axis while the microcontroller serves the
+accelerometer's FIFO, computes the features, sends the report in k LoRaWAN
+class A uplinks (k = 1 when it fits one) and listens in RX1 and RX2 after
+each, and sleeps the rest of the time; its regulator draws its quiescent
+current throughout. Per report, with I the supply current of each consumer
+(A) and t its time (s) (:mod:`.node_timing`):
 
-    accelerometer measuring   Q_acq   = I_meas (t_on + W)
-    accelerometer asleep      Q_stby  = I_stby (T - t_on - W)
-    microcontroller features  Q_mcu   = I_mcu t_mcu,  t_mcu = axes t_FFT(N)
-    radio transmit            Q_tx    = I_tx ToA       (airtime model, :mod:`.lora`)
-    radio RX1, RX2            Q_rx    = I_rx n_sym T_sym(window's data rate)
-    node sleep                Q_sleep = I_sleep (T - t_mcu - ToA - t_rx1 - t_rx2)
+    accelerometer measuring     Q = I_meas (t_on + W)
+    accelerometer standby       Q = I_stby (T - t_on - W)
+    microcontroller acquiring   Q = I_acq (t_on + W)        (awake serving the FIFO)
+    microcontroller features    Q = I_mcu t_mcu,  t_mcu = axes t_FFT(N)
+    radio transmit              Q = I_tx ToA                (all k uplinks, :mod:`.lora`)
+    radio RX1, RX2              Q = k I_rx n_sym T_sym(window's data rate)
+    regulator quiescent         Q = I_q T
+    node sleep                  Q = I_sleep (T - t_on - W - t_mcu - ToA - k (t_rx1 + t_rx2))
 
 The charge per report is the sum; the average current is that over T; the
-battery's life follows from :func:`.cells.life_years`. Every current is drawn
-from the battery through a linear regulator, so the battery delivers the
-same current; energy per report is charge x the cell's voltage. Each stage
-carries its source (:mod:`.node_defaults`, the sensor's supply figures,
-:mod:`.energy`); a stage whose current is not known is listed as not counted,
-never filled in.
+battery's life follows from :func:`.cells.cell_life` (capacity at that drain,
+self-discharge, capped at the cell's shelf life). Every current is drawn from
+the battery through a linear regulator, so the battery delivers the same
+current; energy per report is charge x the cell's voltage. Each stage carries
+its source (``node.toml`` via :mod:`.node_defaults`, the sensor's supply
+figures, ``radios.toml``); a stage whose current is not known is listed as not
+counted, never filled in, and every budget ends with what the model leaves out.
 """
 
 from __future__ import annotations
@@ -29,38 +35,47 @@ from dataclasses import asdict, dataclass, field
 from ..errors import SDTError
 from ..specs import FeatureSetSpec, SensorSpec
 from . import node_defaults as nd
-from .budget import DataRateBudget, edge_budget
-from .cells import Cell, life_years
-from .energy import DEFAULT_RADIO, Radio
-from .lora import symbol_time_s
-from .lorawan import region as region_named
+from .cells import Cell, cell_life
+from .energy import NODE_RADIO, Radio
+from .node_timing import node_timing
 
 __all__ = ["NodeBudget", "NodeSettings", "Stage", "battery_life_years", "node_budget"]
 
 
 @dataclass(frozen=True)
 class NodeSettings:
-    """What the node does besides its accelerometer; every default is sourced (node_defaults)."""
+    """What the node does besides its accelerometer; every default is sourced (node.toml).
+
+    ``rx_current_a`` None takes the radio profile's receive current (else
+    node.toml's); ``mcu_acquire_current_a`` None takes ``mcu_current_a``
+    (awake through the window: the upper bound).
+    """
 
     interval_s: float = 600.0
     window_s: float = 0.64
     axes: int = 3
     region: str = "EU868"
     data_rate: str | None = None
-    radio: Radio | str = DEFAULT_RADIO
-    rx_current_a: float = nd.RX_CURRENT_A
+    radio: Radio | str = NODE_RADIO
+    rx_current_a: float | None = None
     rx_symbols: int = nd.RX_SYMBOLS
     rx2_sf: int | None = None
     sleep_current_a: float = nd.SLEEP_CURRENT_A
     mcu_current_a: float | None = nd.MCU_CURRENT_A
     mcu_time_s: float | None = None
+    mcu_acquire_current_a: float | None = None
+    regulator_current_a: float = nd.REGULATOR_A
+    repeater: bool = True
 
     def __post_init__(self) -> None:
         for name in ("interval_s", "window_s"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0):
                 raise SDTError(f"{name.removesuffix('_s')} must be > 0 s, got {value!r}")
-        for name in ("rx_current_a", "sleep_current_a", "mcu_current_a", "mcu_time_s"):
+        for name in (
+            "rx_current_a", "sleep_current_a", "mcu_current_a", "mcu_time_s",
+            "mcu_acquire_current_a", "regulator_current_a",
+        ):  # fmt: skip
             value = getattr(self, name)
             if value is not None and not (math.isfinite(value) and value >= 0):
                 unit = "s" if name.endswith("_s") else "A"
@@ -85,7 +100,11 @@ class Stage:
 
 @dataclass(frozen=True)
 class NodeBudget:
-    """A node's charge per report by consumer, average current and battery life."""
+    """A node's charge per report by consumer, average current and battery life.
+
+    ``life_years`` is capped at the cell's shelf life (``life_capped`` says
+    when); ``uncapped_life_years`` is what the drain alone would give.
+    """
 
     sensor: str
     sensor_mode: str
@@ -99,40 +118,19 @@ class NodeBudget:
     average_current_a: float
     life_years: float
     notes: tuple[str, ...] = field(default=())
+    life_capped: bool = False
+    uncapped_life_years: float = math.nan
+    capacity_mah: float = math.nan
+    uplinks: int = 1
+    radio: str = ""
 
     def to_dict(self) -> dict:
         """JSON-ready form."""
         data = asdict(self)
-        data["life_years"] = None if math.isinf(self.life_years) else self.life_years
+        inf = math.isinf(self.uncapped_life_years)
+        data["uncapped_life_years"] = None if inf else self.uncapped_life_years
+        data["battery"]["curve"] = [list(p) for p in self.battery.curve]
         return data
-
-
-def _fft_time_s(samples: int) -> float:
-    """The reference FFT's cycles (at 120 MHz) scaled by N log2 N, run at the node's clock."""
-    points, seconds, _ = nd.FFT_REFERENCE
-    cycles = seconds * 120e6 * samples * math.log2(max(samples, 2)) / (points * math.log2(points))
-    return cycles / nd.MCU_CLOCK_HZ
-
-
-def _pick_rate(rows: tuple[DataRateBudget, ...], wanted: str | None) -> DataRateBudget:
-    """The data rate asked for, else the longest-range one that carries the report legally.
-
-    When no rate carrying the report in one uplink keeps the duty cycle or dwell
-    time, the fastest such rate is returned and the caller's checks name the problem.
-    """
-    if wanted is not None:
-        for row in rows:
-            if row.data_rate.lower() == wanted.strip().lower():
-                return row
-        names = ", ".join(r.data_rate for r in rows)
-        raise SDTError(f"data rate {wanted!r} is not in this region's plan; use one of {names}")
-    fitting = [r for r in rows if r.fits]
-    if not fitting:
-        raise SDTError("the report fits no single uplink of this region; pass --dr to split it")
-    legal = [r for r in fitting if r.duty_cycle_ok is not False and r.dwell_ok is not False]
-    if not legal:
-        return min(fitting, key=lambda r: r.time_on_air_s)
-    return max(legal, key=lambda r: r.time_on_air_s)
 
 
 def _figure(sensor: SensorSpec, name: str) -> tuple[float | None, str]:
@@ -143,6 +141,10 @@ def _figure(sensor: SensorSpec, name: str) -> tuple[float | None, str]:
     return figure.value, figure.cited()
 
 
+def _charge(current: float | None, time_s: float) -> float | None:
+    return None if current is None else current * time_s
+
+
 def node_budget(
     sensor: SensorSpec,
     feature_set: FeatureSetSpec,
@@ -151,11 +153,6 @@ def node_budget(
 ) -> NodeBudget:
     """Charge per report by consumer, average current and life of ``battery`` (module notes)."""
     s = settings or NodeSettings()
-    budget = edge_budget(
-        feature_set, axes=s.axes, interval_s=s.interval_s, region=s.region, radio=s.radio
-    )
-    row = _pick_rate(budget.rows, s.data_rate)
-    rate = next(r for r in region_named(s.region).data_rates if r.name == row.data_rate)
     notes: list[str] = []
     i_meas, meas_src = _figure(sensor, "measure_ua")
     i_stby, stby_src = _figure(sensor, "standby_ua")
@@ -165,94 +162,91 @@ def node_budget(
             f"sensor {sensor.name!r}: no measuring supply current ({meas_src}); "
             f"give it with --sensor-current-ua"
         )
-    t_on = (t_on_ms or 0.0) / 1e3
     if t_on_ms is None:
         notes.append(f"turn-on time not counted ({on_src})")
     if sensor.sampling_rate_hz == "native":
         raise SDTError(f"sensor {sensor.name!r} samples at the recording's rate: no node to budget")
-    samples = max(1, round(s.window_s * float(sensor.sampling_rate_hz)))
-    t_mcu = s.mcu_time_s if s.mcu_time_s is not None else s.axes * _fft_time_s(samples)
-    mcu_src = (
-        "user setting"
-        if s.mcu_time_s is not None
-        else f"{nd.FFT_REFERENCE[2]}, scaled to {samples} points x {s.axes} axes at 80 MHz"
-    )
-    if s.mcu_current_a == nd.MCU_CURRENT_A:
-        mcu_src += f"; current: {nd.MCU_SOURCE}"
-    t_acq = t_on + s.window_s
-    t_rx1 = s.rx_symbols * symbol_time_s(rate.sf, 500e3 if s.region.upper() == "US915" else 125e3)
-    rx2_sf, rx2_bw = nd.RX2_MODULATION[s.region.upper()]
-    rx2_sf = s.rx2_sf or rx2_sf
-    t_rx2 = s.rx_symbols * symbol_time_s(rx2_sf, rx2_bw)
-    busy = t_acq + t_mcu + row.time_on_air_s
-    if s.interval_s < busy:
-        raise SDTError(
-            f"interval {s.interval_s:g} s is shorter than one acquisition ({t_acq:g} s) plus its "
-            f"computation and transmission ({t_mcu + row.time_on_air_s:.3g} s); lengthen --interval"
-        )
-    if row.duty_cycle_ok is False:
-        raise SDTError(
-            f"interval {s.interval_s:g} s breaks the {s.region.upper()} duty cycle at "
-            f"{row.data_rate} (reports at most every {row.min_interval_s:.1f} s); "
-            f"lengthen --interval"
-        )
-    if row.dwell_ok is False:
-        raise SDTError(
-            f"{row.data_rate} uplinks of {row.longest_message_s:.3f} s exceed the dwell time; "
-            f"choose a faster --dr"
-        )
-    model = budget.radio
-    stages = [
-        Stage("accelerometer measuring", i_meas * 1e-6, t_acq, i_meas * 1e-6 * t_acq, meas_src),
-        Stage(
-            "accelerometer standby",
-            None if i_stby is None else i_stby * 1e-6,
-            s.interval_s - t_acq,
-            None if i_stby is None else i_stby * 1e-6 * (s.interval_s - t_acq),
-            stby_src,
-        ),
-        Stage(
-            "microcontroller features",
-            s.mcu_current_a,
-            t_mcu,
-            None if s.mcu_current_a is None else s.mcu_current_a * t_mcu,
-            mcu_src,
-            "" if s.mcu_current_a is not None else "run current not known: give --mcu-current-ma",
-        ),
-        Stage(f"radio transmit ({row.data_rate})", model.tx_current_a, row.time_on_air_s,
-              model.tx_current_a * row.time_on_air_s, model.source or model.name),
-        Stage("radio RX1", s.rx_current_a, t_rx1, s.rx_current_a * t_rx1,
-              f"{nd.RX_SOURCE}; {s.rx_symbols} symbols at SF{rate.sf}"),
-        Stage("radio RX2", s.rx_current_a, t_rx2, s.rx_current_a * t_rx2,
-              f"{nd.RX_SOURCE}; {s.rx_symbols} symbols at SF{rx2_sf}/{rx2_bw / 1e3:g} kHz"),
-    ]  # fmt: skip
-    awake = t_mcu + row.time_on_air_s + t_rx1 + t_rx2
-    stages.append(
-        Stage("node sleep", s.sleep_current_a, s.interval_s - awake,
-              s.sleep_current_a * (s.interval_s - awake), nd.SLEEP_SOURCE)
-    )  # fmt: skip
+    t = node_timing(float(sensor.sampling_rate_hz), (t_on_ms or 0.0) / 1e3, feature_set, s)
+    stages = _stages(s, t, i_meas * 1e-6, meas_src, i_stby, stby_src)
     for stage in stages:
         if stage.charge_c is None:
             notes.append(f"{stage.consumer} not counted: {stage.note or stage.source}")
-    if battery.self_discharge_per_year is None:
-        notes.append(f"battery {battery.name}: self-discharge not known, not counted")
     charge = sum(st.charge_c for st in stages if st.charge_c is not None)
     average = charge / s.interval_s
-    mode = sensor.supply.mode if sensor.supply is not None else ""
+    life = cell_life(average, battery)
+    if life.capped:
+        notes.append(life.cap_note(battery))
+    notes.append(nd.NOT_COUNTED)
     return NodeBudget(
         sensor=sensor.name,
-        sensor_mode=mode,
+        sensor_mode=sensor.supply.mode if sensor.supply is not None else "",
         battery=battery,
-        region=budget.region,
-        data_rate=row.data_rate,
+        region=t.region,
+        data_rate=t.row.data_rate,
         interval_s=s.interval_s,
         stages=tuple(stages),
         charge_per_report_c=charge,
         energy_per_report_j=charge * battery.voltage_v,
         average_current_a=average,
-        life_years=life_years(average, battery),
+        life_years=life.years,
         notes=tuple(notes),
+        life_capped=life.capped,
+        uncapped_life_years=life.uncapped_years,
+        capacity_mah=life.capacity_mah,
+        uplinks=t.uplinks,
+        radio=t.radio.name,
     )
+
+
+def _stages(s: NodeSettings, t, i_meas: float, meas_src: str, i_stby, stby_src: str) -> list[Stage]:
+    """One :class:`Stage` per consumer, in the order of the module notes."""
+    radio, k = t.radio, t.uplinks
+    mcu_src = (
+        "user setting"
+        if s.mcu_time_s is not None
+        else f"{nd.FFT_REFERENCE[2]}, scaled to {t.samples} points x {s.axes} axes at "
+        f"{nd.MCU_CLOCK_HZ / 1e6:g} MHz"
+    )
+    if s.mcu_current_a == nd.MCU_CURRENT_A:
+        mcu_src += f"; current: {nd.MCU_SOURCE}"
+    unknown_mcu = "run current not known: give --mcu-current-ma"
+    i_acq = s.mcu_current_a if s.mcu_acquire_current_a is None else s.mcu_acquire_current_a
+    acq_src = (
+        "user setting"
+        if s.mcu_acquire_current_a is not None
+        else f"awake at its run current through turn-on and window, serving the FIFO (upper "
+        f"bound; {nd.MCU_STOP2_A * 1e6:g} uA in Stop 2 between FIFO reads is the floor): "
+        f"--mcu-acquire-ma"
+    )
+    i_rx = s.rx_current_a if s.rx_current_a is not None else radio.rx_current_a
+    rx_src = "user setting" if s.rx_current_a is not None else radio.rx_source
+    if i_rx is None:
+        i_rx, rx_src = nd.RX_CURRENT_A, f"{nd.RX_SOURCE} (the profile gives no receive current)"
+    per = f" x {k} uplinks" if k > 1 else ""
+    rx1 = f"{rx_src}; {s.rx_symbols} symbols at SF{t.rate.sf}{per}"
+    rx2 = f"{rx_src}; {s.rx_symbols} symbols at SF{t.rx2_sf}/{t.rx2_bw / 1e3:g} kHz{per}"
+    reg_src = "user setting" if s.regulator_current_a != nd.REGULATOR_A else nd.REGULATOR_SOURCE
+    toa, t_rx1, t_rx2 = t.row.time_on_air_s, k * t.t_rx1, k * t.t_rx2
+    asleep = s.interval_s - t.t_acq - t.t_mcu - toa - t_rx1 - t_rx2
+    i_stby_a = None if i_stby is None else i_stby * 1e-6
+    return [
+        Stage("accelerometer measuring", i_meas, t.t_acq, i_meas * t.t_acq, meas_src),
+        Stage("accelerometer standby", i_stby_a, s.interval_s - t.t_acq,
+              _charge(i_stby_a, s.interval_s - t.t_acq), stby_src),
+        Stage("microcontroller acquiring", i_acq, t.t_acq, _charge(i_acq, t.t_acq), acq_src,
+              "" if i_acq is not None else unknown_mcu),
+        Stage("microcontroller features", s.mcu_current_a, t.t_mcu,
+              _charge(s.mcu_current_a, t.t_mcu), mcu_src,
+              "" if s.mcu_current_a is not None else unknown_mcu),
+        Stage(f"radio transmit ({t.row.data_rate}{per})", radio.tx_current_a, toa,
+              radio.tx_current_a * toa, f"{radio.name}: {radio.source or 'user setting'}"),
+        Stage("radio RX1", i_rx, t_rx1, i_rx * t_rx1, rx1),
+        Stage("radio RX2", i_rx, t_rx2, i_rx * t_rx2, rx2),
+        Stage("regulator quiescent", s.regulator_current_a, s.interval_s,
+              s.regulator_current_a * s.interval_s, reg_src),
+        Stage("node sleep", s.sleep_current_a, asleep, s.sleep_current_a * asleep,
+              nd.SLEEP_SOURCE),
+    ]  # fmt: skip
 
 
 def battery_life_years(

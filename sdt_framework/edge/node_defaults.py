@@ -1,15 +1,11 @@
 """The node's own figures besides the accelerometer, each with where it comes from.
 
-Every default below is a setting of :class:`~.node.NodeSettings`; a user with
-measured figures for their own node passes them instead (``sdt budget --help``).
-
-Radio receive current and node sleep current: Microchip online documentation,
-section 7.4.1 "Current Consumption" of a LoRa module with an on-module
-microcontroller (onlinedocs.microchip.com, GUID-BC5AB492-AA63-41E4-8A56-931408AA8F4F,
-page GUID-798C30DB-83DA-4ED4-9D0A-5DF371351E60), typical, VDD = 3.3 V, 25 °C:
-"RX; European band, fRF = 868 MHz, Bandwidth = 125 kHz | 12.68 | mA" and
-"Low power modes | Standby | Sleep | 1.608 | µA" (microcontroller in standby,
-transceiver asleep: the whole node apart from its accelerometer).
+The currents, the clock and the reference FFT are read from ``node.toml``
+beside this module (every figure with its document, table and printed words);
+the LoRaWAN receive-window constants below are protocol facts with their
+sources here. Every default is a setting of :class:`~.node.NodeSettings`; a
+user with measured figures for their own node passes them instead
+(``sdt budget --help``).
 
 Receive windows (LoRaWAN class A): after each uplink the node opens RX1 and
 RX2. With no downlink waiting (the usual case for a sensor that only
@@ -25,28 +21,24 @@ DR_0`` (SF12/125 kHz) and ``RegionUS915.h`` ``US915_RX_WND_2_DR DR_8``
 (``DataratesUS915``/``BandwidthsUS915``: SF12, 500 kHz). A network that
 configures another RX2 rate (The Things Network uses SF9 in EU868) passes
 ``--rx2-sf``. The time between the uplink and the windows (1 s and 2 s) is
-spent asleep.
-
-Feature computation on the microcontroller: an FFT of the window on a
-Cortex-M4F class part. Time: measured by an NXP community expert
-(community.nxp.com, thread "How to improve i.MX RT1024 RFFT execution time too
-long?", accepted reply, table "FFT processing time on 120MHz K64 (m4) with HW
-FPU operations (us)"): ``arm_cfft_f32`` of 2048 points in 2439 us, i.e.
-2439 us x 120 MHz = 292 680 cycles; a window of N samples per axis is scaled
-from it by N log2 N, and the cycles are run at ``MCU_CLOCK_HZ`` = 80 MHz (same
-core, same cycles: an assumption). Current: STM32L496 (Cortex-M4F, 80 MHz)
-feature list as quoted from ST's datasheet in the RT-Thread STM32L496-Nucleo
-BSP README: "91 µA/MHz run mode (LDO Mode)", so 91 uA x 80 = 7.28 mA while
-computing. The charge per cycle, 91 pC, does not depend on the clock chosen.
+spent asleep. A report split over several uplinks opens a pair of windows
+after each of them.
 """
 
 from __future__ import annotations
 
+from .sourced import DataModel, Figure, read_data
+
 __all__ = [
     "FFT_REFERENCE",
+    "FIGURES",
     "MCU_CLOCK_HZ",
     "MCU_CURRENT_A",
     "MCU_SOURCE",
+    "MCU_STOP2_A",
+    "NOT_COUNTED",
+    "REGULATOR_A",
+    "REGULATOR_SOURCE",
     "RX2_MODULATION",
     "RX_CURRENT_A",
     "RX_SOURCE",
@@ -55,29 +47,57 @@ __all__ = [
     "SLEEP_SOURCE",
 ]
 
-_MCHP = "Microchip online docs, 7.4.1 Current Consumption (LoRa module, VDD 3.3 V, 25 °C, typical)"
-#: receive current, EU band 868 MHz, 125 kHz, A
-RX_CURRENT_A = 12.68e-3
-RX_SOURCE = f"{_MCHP}: RX, 868 MHz, BW 125 kHz, 12.68 mA"
+
+class NodeFigures(DataModel):
+    """node.toml: one :class:`~.sourced.Figure` per default."""
+
+    rx: Figure
+    sleep: Figure
+    mcu_run: Figure
+    mcu_clock: Figure
+    mcu_stop2: Figure
+    fft_points: Figure
+    fft_time: Figure
+    fft_clock: Figure
+    regulator: Figure
+
+
+#: node.toml, every figure with its source
+FIGURES = read_data("node.toml", NodeFigures)
+
+#: receive current of a radio profile without its own, A
+RX_CURRENT_A = FIGURES.rx.value * 1e-3
+RX_SOURCE = f"{FIGURES.rx.cited()}: {FIGURES.rx.value:g} mA"
 #: node sleep current (microcontroller standby, transceiver sleep), A
-SLEEP_CURRENT_A = 1.608e-6
-SLEEP_SOURCE = f"{_MCHP}: Standby/Sleep, 1.608 uA"
+SLEEP_CURRENT_A = FIGURES.sleep.value * 1e-6
+SLEEP_SOURCE = f"{FIGURES.sleep.cited()}: {FIGURES.sleep.value:g} uA"
+#: clock the microcontroller runs at, Hz, and its run current there, A
+MCU_CLOCK_HZ = FIGURES.mcu_clock.value * 1e6
+MCU_CURRENT_A = FIGURES.mcu_run.value * 1e-6 * FIGURES.mcu_clock.value
+MCU_SOURCE = (
+    f"{FIGURES.mcu_run.doc}: '{FIGURES.mcu_run.printed}', at {FIGURES.mcu_clock.value:g} MHz"
+)
+#: Stop 2 current, A: the floor of the acquiring stage (not the default)
+MCU_STOP2_A = FIGURES.mcu_stop2.value * 1e-6
+#: quiescent current of the regulator, A
+REGULATOR_A = FIGURES.regulator.value * 1e-6
+REGULATOR_SOURCE = f"{FIGURES.regulator.cited()}: {FIGURES.regulator.value:g} uA typical"
+#: (FFT points, seconds, source, clock Hz) of the measured reference FFT
+FFT_REFERENCE = (
+    int(FIGURES.fft_points.value),
+    FIGURES.fft_time.value * 1e-6,
+    f"{FIGURES.fft_time.doc}: arm_cfft_f32 {FIGURES.fft_points.value:g} points on a "
+    f"{FIGURES.fft_clock.value:g} MHz K64 (Cortex-M4, HW FPU), {FIGURES.fft_time.value:g} us",
+    FIGURES.fft_clock.value * 1e6,
+)
 #: symbols a receive window stays open without a downlink (LoRaWAN preamble length)
 RX_SYMBOLS = 8
 #: RX2 spreading factor and bandwidth per region
 RX2_MODULATION = {"EU868": (12, 125e3), "US915": (12, 500e3)}
-#: (FFT points, seconds, source) of the measured reference FFT
-FFT_REFERENCE = (
-    2048,
-    2439e-6,
-    "NXP community, i.MX RT1024 RFFT thread, accepted reply: arm_cfft_f32 2048 points "
-    "on a 120 MHz K64 (Cortex-M4, HW FPU), 2439 us",
-)
-#: clock the feature computation runs at, Hz
-MCU_CLOCK_HZ = 80e6
-#: run current at that clock: 91 uA/MHz x 80 MHz, A
-MCU_CURRENT_A = 91e-6 * 80
-MCU_SOURCE = (
-    "STM32L496 (Cortex-M4F) '91 µA/MHz run mode (LDO Mode)', as quoted in the RT-Thread "
-    "STM32L496-Nucleo BSP README, at 80 MHz"
+#: what the node model leaves out, said with every life it gives
+NOT_COUNTED = (
+    "the life is an estimate from typical datasheet figures at room temperature; not counted: "
+    "cold or heat, the cell's voltage drop under the radio's current pulses (Li-SOCl2 "
+    "passivation), part-to-part spread (maximum rather than typical currents), confirmed "
+    "uplinks, retransmissions, downlinks and MAC commands, the join, and board leakage"
 )

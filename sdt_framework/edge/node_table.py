@@ -11,7 +11,7 @@ import math
 from .interval import format_interval
 from .node import NodeBudget
 
-__all__ = ["format_life", "node_rows", "node_sources", "node_summary"]
+__all__ = ["format_life", "life_words", "node_rows", "node_sources", "node_summary"]
 
 
 def format_life(years: float) -> str:
@@ -19,15 +19,30 @@ def format_life(years: float) -> str:
     return "> 100" if math.isinf(years) or years > 100 else f"{years:.2f}"
 
 
+def life_words(budget: NodeBudget) -> str:
+    """``"6.44 years (an estimate under typical figures)"``, or the life at its named cap."""
+    years = f"{format_life(budget.life_years)} years"
+    if budget.life_capped:
+        alone = budget.uncapped_life_years
+        more = "no end" if math.isinf(alone) else f"{alone:.1f} years"
+        return (
+            f"{years}, capped at the {budget.battery.name} cell's rated shelf life (the drain "
+            f"alone would give {more})"
+        )
+    return f"{years} (an estimate under typical figures; see the notes)"
+
+
 def node_summary(budget: NodeBudget) -> str:
-    """One sentence: which sensor, cell, rate and interval, and the result."""
+    """One sentence: which sensor, cell, radio, rate and interval, and the result."""
     cell = budget.battery
+    uplinks = "" if budget.uplinks == 1 else f" in {budget.uplinks} uplinks"
     return (
-        f"{budget.sensor} on {cell.name} ({cell.capacity_mah:g} mAh, {cell.voltage_v:g} V), one "
-        f"report every {format_interval(budget.interval_s)} at {budget.region} {budget.data_rate}: "
+        f"{budget.sensor} on {cell.name} ({budget.capacity_mah:.0f} mAh at this drain, "
+        f"{cell.voltage_v:g} V), one report every {format_interval(budget.interval_s)} at "
+        f"{budget.region} {budget.data_rate}{uplinks} on {budget.radio}: "
         f"{budget.charge_per_report_c * 1e3:.3f} mC = {budget.energy_per_report_j * 1e3:.2f} mJ "
         f"per report, average {budget.average_current_a * 1e6:.2f} uA, battery life "
-        f"{format_life(budget.life_years)} years"
+        f"{life_words(budget)}"
     )
 
 
@@ -60,7 +75,13 @@ def node_sources(budget: NodeBudget) -> list[str]:
     lines = [f"{stage.consumer}: {stage.source}" for stage in budget.stages]
     cell = budget.battery
     lines.append(f"battery {cell.name}: {cell.source}")
-    if cell.self_discharge_source:
-        lines.append(f"battery {cell.name} self-discharge: {cell.self_discharge_source}")
+    lines.append(
+        f"battery {cell.name} self-discharge {cell.self_discharge_per_year:.2%}/year: "
+        f"{cell.self_discharge_source or 'user setting'}"
+    )
+    lines.append(
+        f"battery {cell.name} shelf life {cell.shelf_life_years:g} years: "
+        f"{cell.shelf_life_source or 'user setting'}"
+    )
     lines += [f"note: {note}" for note in budget.notes]
     return lines

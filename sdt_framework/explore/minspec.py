@@ -115,8 +115,8 @@ def min_spec(
                     note = "no level meets the target"
                     if "life" in rules and line["battery_life_years"].isna().all():
                         note += (
-                            ": no battery life (no supply current on record for these "
-                            "points), so the life constraint cannot be met"
+                            ": these points have no battery life (points.csv, life_note, "
+                            "says why), so the life constraint cannot be met"
                         )
             rows.append(
                 {

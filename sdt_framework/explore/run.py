@@ -26,7 +26,7 @@ from ..registry import Registry
 from ..sensor_files import load_sensor_file
 from ..specs import SensorSpec
 from .design import design_points, repeated_point, unit_column
-from .life import point_lives, with_battery_life
+from .life import check_report_interval, point_lives, with_battery_life
 from .points import Point, build_points, left_out
 from .size import design_size, sweep_estimate
 from .stage_axes import StageAxis, base_value, check_stage_axes
@@ -120,6 +120,8 @@ def plan_explore(
     if probe.reference not in names:  # the reference follows the data, as the probe found
         names = [probe.reference, *names]
     plan = plan_benchmark(_config(data, names, where), registry)
+    specs = [base, *(p.spec for p in points)]
+    check_report_interval(sweep.target, specs, plan.feature_set, plan.config.window_s, where)
     if sweep.target.zone_agreement is not None or plan.config.zones:
         zone_assignments(plan, where, every=sweep.target.zone_agreement is not None)
     points, skipped = left_out(points, skipped, plan.skipped_sensors, list(sweep.axes))

@@ -106,7 +106,27 @@ class Target(SweepModel):
             raise ValueError(
                 "give exactly one of macro_f1, fraction_of_reference, max_loss, max_loss_to_base"
             )
+        cap = CELLS[self.battery.strip().lower()]
+        wanted = self.min_battery_life_years
+        if wanted is not None and wanted > cap.shelf_life_years:
+            raise ValueError(
+                f"min_battery_life_years = {wanted:g} exceeds the {cap.name} cell's rated "
+                f"{cap.shelf_life_years:g}-year shelf life, so no node can meet it; lower it or "
+                f"choose another battery (docs/edge.md)"
+            )
         return self
+
+    def life_notes(self) -> list[str]:
+        """``battery``/``report_interval`` given without a life threshold: what they do then."""
+        given = [f for f in ("battery", "report_interval") if f in self.model_fields_set]
+        if self.min_battery_life_years is not None or not given:
+            return []
+        words = " and ".join(f"sweep.target.{f} = {getattr(self, f)!r}" for f in given)
+        return [
+            f"{words} without min_battery_life_years: sets the battery life shown in "
+            f"points.csv, pareto.csv and the front with life only; no point is judged on it "
+            f"(add min_battery_life_years to make it a constraint)"
+        ]
 
     @property
     def interval_s(self) -> float:

@@ -89,7 +89,7 @@ def test_radio_model_can_be_replaced(paper8):
 
 @pytest.mark.parametrize(
     ("text", "seconds"),
-    [("10min", 600), ("30s", 30), ("1h", 3600), ("1.5h", 5400), ("2d", 172800), ("600", 600)],
+    [("10min", 600), ("30s", 30), ("1h", 3600), ("1.5h", 5400), ("2d", 172800), (600, 600)],
 )
 def test_interval_parsing(text, seconds):
     assert parse_interval(text) == seconds

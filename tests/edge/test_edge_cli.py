@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 
@@ -51,7 +52,7 @@ def test_radio_override_scales_energy():
     ("args", "message"),
     [
         (["--region", "XX"], "error: unknown region 'XX'"),
-        (["--interval", "abc"], "error: interval 'abc' is not a duration"),
+        (["--interval", "abc"], "error: --interval 'abc' is not a duration"),
         (["--axes", "0"], "error: --axes must be 1 or more, got 0"),
     ],
 )
@@ -79,3 +80,71 @@ def test_other_bad_input_raises_the_user_error(args, message):
     result = runner.invoke(app, ["budget", *args])
     assert isinstance(result.exception, SDTError)  # main() prints it as one line, exit 2
     assert message in str(result.exception)
+
+
+def _one_line_exit_2(*args: str) -> str:
+    result = subprocess.run(
+        [sys.executable, "-m", "sdt_framework", "budget", *args],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    lines = [line for line in result.stderr.splitlines() if line.strip()]
+    assert result.returncode == 2 and len(lines) == 1, (result.returncode, result.stderr)
+    return lines[0]
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        # a bare number: 10 s or 10 min? refused, not guessed (issue 39)
+        (["--interval", "10"], "error: --interval '10' has no unit; write 10s (seconds), 10min"),
+        (["--sensor", "adxl345", "--window", "0.64"], "error: --window '0.64' has no unit"),
+        # node options without --sensor would be ignored (issue 39)
+        (["--battery", "D"], "error: --battery needs --sensor"),
+        (["--capacity-mah", "2600"], "error: --capacity-mah needs --sensor"),
+        (["--dr", "DR5"], "error: --dr needs --sensor"),
+        # cell figures without a cell of one's own would be ignored; a zero voltage refused
+        (
+            ["--sensor", "adxl345", "--cell-voltage", "0"],
+            "error: --cell-voltage needs --capacity-mah",
+        ),
+        (
+            ["--sensor", "adxl345", "--capacity-mah", "2600", "--cell-voltage", "0",
+             "--self-discharge-pct", "1", "--shelf-life-years", "10"],
+            "error: --cell-voltage must be > 0 V, got 0.0",
+        ),
+        # a cell of one's own needs the figures the life depends on: none is guessed
+        (
+            ["--sensor", "adxl345", "--capacity-mah", "2600"],
+            "error: --capacity-mah needs --cell-voltage, --self-discharge-pct, --shelf-life-years",
+        ),
+        (["--sensor", "adxl345", "--voltage", "3.3"], "error: --voltage sets the radio table"),
+    ],
+)  # fmt: skip
+def test_values_that_would_be_ignored_or_guessed_are_one_line_exit_2(args, message):
+    assert _one_line_exit_2(*args).startswith(message)
+
+
+def test_own_cell_with_its_figures_is_used_and_capped(paper8):
+    args = ["budget", "--sensor", "adxl345", "--capacity-mah", "2600", "--cell-voltage", "3.6",
+            "--self-discharge-pct", "1", "--shelf-life-years", "10", "--interval", "1h",
+            "--json"]  # fmt: skip
+    data = json.loads(runner.invoke(app, args).stdout)
+    assert data["battery"]["capacity_mah"] == 2600 and data["battery"]["shelf_life_years"] == 10
+    average_ma = data["average_current_a"] * 1e3
+    uncapped = 1 / (average_ma * 8766 / 2600 + 0.01)
+    assert data["uncapped_life_years"] == pytest.approx(uncapped, rel=1e-12)
+    assert data["life_years"] == min(10.0, uncapped)
+
+
+def test_help_examples_name_only_registered_feature_sets(registry):
+    """`sdt budget --help` suggested 'paper8+env_bpfo', which no default install has (issue 39)."""
+    from sdt_framework.features import resolve_feature_set
+
+    text = runner.invoke(app, ["budget", "--help"], env={"COLUMNS": "200"}).stdout
+    names = set(re.findall(r"\b[a-z][a-z0-9_]*(?:\+[a-z][a-z0-9_]*)+\b", text))
+    names |= set(re.findall(r"--features (\S+)", text))
+    assert "paper8" in names or "--features paper8" in text
+    for name in names:
+        resolve_feature_set(registry, name)  # raises on a set that is not registered

@@ -131,7 +131,7 @@ def test_a_point_without_supply_figures_cannot_meet_a_life_constraint(registry, 
     assert not verdicts(unknown, FIELDS, target)["meets"].any()
     spec = min_spec(unknown, FIELDS, BASE, target, DEMAND)
     assert math.isnan(spec["min_level"].iloc[0])
-    assert "no supply current on record" in spec["note"].iloc[0]
+    assert "have no battery life (points.csv, life_note, says why)" in spec["note"].iloc[0]
 
 
 def test_the_target_says_battery_and_interval() -> None:
@@ -164,6 +164,10 @@ machines = ["Motor-2"]
         ('battery = "AAA"', "battery"),
         ('report_interval = "10m"', "report_interval"),
         ('report_interval = "0s"', "report_interval"),
+        ('report_interval = "10"', "report_interval"),  # no unit: 10 s or 10 min? (issue 39)
+        # above the cell's rated shelf life no node can last: refused, not failed at the end
+        ('min_battery_life_years = 25\nbattery = "D"', "min_battery_life_years"),
+        ("min_battery_life_years = 16", "min_battery_life_years"),  # 2xAA: 15 years
     ],
 )
 def test_a_bad_life_value_is_one_line_naming_file_and_field(tmp_path, line, field) -> None:
@@ -175,3 +179,78 @@ def test_a_bad_life_value_is_one_line_naming_file_and_field(tmp_path, line, fiel
     assert len(lines) == 1 and lines[0].startswith("error: "), result.stderr
     assert str(path) in lines[0] and "sweep.target" in lines[0]
     assert field in lines[0]
+
+
+@pytest.mark.parametrize(
+    ("interval", "why"),
+    [("2s", "breaks the EU868 duty cycle"), ("0.5s", "shorter than one acquisition")],
+)
+def test_a_report_interval_the_node_cannot_keep_is_refused_when_the_sweep_is_read(
+    tmp_path, interval, why
+) -> None:
+    """Before: the whole sweep ran, then blamed 'no supply current' and suggested --interval."""
+    path = tmp_path / "sweep.toml"
+    path.write_text(
+        SWEEP.format(line=f'min_battery_life_years = 5.0\nreport_interval = "{interval}"')
+    )
+    out = tmp_path / "o"
+    result = run_sdt("explore", str(path), "--quick", "--strategy", "exhaustive", "--out", str(out))
+    assert result.returncode == 2, result.stderr
+    lines = [x for x in result.stderr.splitlines() if x.strip()]
+    assert len(lines) == 1, result.stderr
+    assert lines[0].startswith(f"error: {path}: sweep.target.report_interval = '{interval}': ")
+    assert why in lines[0] and lines[0].endswith("lengthen report_interval")
+    assert "--interval" not in lines[0] and not (out / "results.parquet").exists()
+
+
+def test_battery_or_interval_without_a_life_threshold_is_said(tmp_path) -> None:
+    target = Target(max_loss=0.05, battery="D")
+    (note,) = target.life_notes()
+    assert note.startswith("sweep.target.battery = 'D' without min_battery_life_years")
+    assert "no point is judged on it" in note
+    assert Target(max_loss=0.05).life_notes() == []
+    assert Target(max_loss=0.05, battery="D", min_battery_life_years=5.0).life_notes() == []
+    # the command says it on reading the file (this sweep then stops on benchmark.sensors)
+    path = tmp_path / "sweep.toml"
+    path.write_text(SWEEP.format(line='battery = "D"') + 'sensors = ["adxl345"]\n')
+    result = run_sdt("explore", str(path), "--out", str(tmp_path / "o"))
+    assert result.returncode == 2
+    assert f"note: {path}: sweep.target.battery = 'D' without min_battery_life_years" in (
+        result.stderr
+    )
+
+
+#: the shelf lives the sources state (cells.toml): L91 15 years; Li/SOCl2 5-20 years (Linden)
+STATED_SHELF_LIFE = {"2xAA": 15.0, "C": 20.0, "D": 20.0}
+
+
+@pytest.mark.parametrize("battery", sorted(STATED_SHELF_LIFE))
+def test_the_life_constraint_can_fail_on_every_cell(registry, battery) -> None:
+    """A threshold the cell can hold (its shelf life) fails for a node reporting every 5 min.
+
+    Before, the D cell counted no self-discharge and its 4 mA capacity at 40 uA,
+    so the ADXL345 node "lasted" 30.7 years at 5 min and met any such threshold.
+    """
+    target = Target(
+        max_loss=0.05,
+        min_battery_life_years=STATED_SHELF_LIFE[battery],
+        battery=battery,
+        report_interval="5min",
+    )
+    base = registry.sensor("adxl345")
+    lives = point_lives([base], registry.feature_set("paper8"), WINDOW_S, target)
+    life = float(lives["battery_life_years"].iloc[0])
+    assert life < STATED_SHELF_LIFE[battery]
+    table = _tidy({r: life for r in RATES}, F1)
+    judged = verdicts(table, FIELDS, target)
+    assert not judged["meets_life"].any() and not judged["meets"].any()
+
+
+def test_a_life_the_shelf_life_caps_says_so(registry) -> None:
+    """On a D cell at 10 min the drain alone gives 27.6 years; the cell is rated for 20."""
+    target = Target(max_loss=0.05, battery="D")
+    lives = point_lives(
+        [registry.sensor("adxl345")], registry.feature_set("paper8"), WINDOW_S, target
+    )
+    assert lives["battery_life_years"].iloc[0] == 20.0
+    assert lives["life_note"].iloc[0] == "capped at the D cell's 20-year shelf life"
