@@ -17,6 +17,7 @@ import json
 import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import pandas as pd
@@ -204,16 +205,39 @@ def _resolve_sensors(names: list[str], registry: Registry) -> list[SensorSpec]:
     return sensors
 
 
+def _data_path(data: str | None, registry: Registry) -> str | None:
+    """``data`` as an absolute path, or a registered dataset's name as given.
+
+    Every recording's file is then named by its absolute path (a manifest's
+    relative paths are taken from its folder), which is what each worker
+    opens: a Dask worker started in another folder opens the same files.
+    """
+    if data is None:
+        return None
+    path = Path(data).expanduser()
+    if path.exists():
+        return os.path.abspath(path)
+    names = sorted(spec.name for spec in registry.datasets())
+    if data in names:
+        return data
+    where = "" if path.is_absolute() else f" (looked for in {os.getcwd()})"
+    raise SDTError(
+        f"--data {data} does not exist{where}; give an NLN-EMP folder, a .csv/.parquet "
+        f"manifest or a registered dataset ({', '.join(names)})"
+    )
+
+
 def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
     """Open the configured dataset; an option its loader does not take is a user error."""
     options = dict(config.dataset_options)
+    data = _data_path(config.data, registry)
     try:
         if config.dataset:
             spec = registry.dataset(config.dataset)
-            if spec.requires_path and not config.data:
+            if spec.requires_path and not data:
                 raise SDTError(f"dataset {config.dataset!r} needs --data PATH")
-            return spec.loader(config.data, **options)
-        return open_dataset(registry, config.data or "synthetic-pump", **options)
+            return spec.loader(data, **options)
+        return open_dataset(registry, data or "synthetic-pump", **options)
     except TypeError as exc:
         if "unexpected keyword argument" not in str(exc):
             raise
