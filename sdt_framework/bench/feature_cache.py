@@ -88,9 +88,12 @@ def read_entry(path: Path, key: str, n_features: int) -> CachedBlock:
     return arrays
 
 
-def source_states(recordings: Iterable[Recording], cache_dir: str) -> dict[str, str | None]:
+def source_states(recordings: Iterable[Recording], cache_dir: str | None) -> dict[str, str | None]:
     """Source -> the digest of its file's bytes (None for generated data, which has no file),
-    each file hashed once, the digests remembered in ``cache_dir``."""
+    each file hashed once, the digests remembered in ``cache_dir`` ({} without a cache: no
+    entry is keyed)."""
+    if cache_dir is None:
+        return {}
     return {
         r.source: file_digest(r.source, cache_dir) if os.path.isfile(r.source) else None
         for r in recordings

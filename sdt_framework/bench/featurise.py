@@ -223,9 +223,7 @@ def featurise_recording(job: FeatureJob) -> RecordingFeatures:
     blocks = out.blocks
     n_features = len(job.feature_set.feature_names)
     done: dict[tuple[str, int, int | None], FeatureBlock] = {}
-    states = {}  # the files' digests, for the keys (no cache: no key)
-    if job.cache_dir is not None:
-        states = source_states((job.recording, *job.node), job.cache_dir)
+    states = source_states((job.recording, *job.node), job.cache_dir)  # for the cache keys
     for group, repeat in ((g, r) for g in _by_prefix(job) for r in range(job.repeats)):
         for sensor, unit in group:
             chain_seed = noise_seed(sensor, job.seed, repeat, job.recording.recording_id)
