@@ -4,7 +4,7 @@ Before, a ``ChainInputError`` raised in a loky worker could not be rebuilt in th
 main process (its ``__init__`` takes three arguments) and every such error
 became ``internal error: BrokenProcessPool`` (exit 70) with the default
 ``--jobs``; ``--jobs 1`` printed the right line. The case that showed it: a
-recording with no sample or one (a TDMS channel, here an ``.npy``), which the
+recording with no sample or one (a TDMS channel, or an ``.npy``), which the
 plan now refuses before any work; the transport is tested with that check
 switched off, so the error is raised where any other would be, in a worker.
 """
@@ -25,12 +25,28 @@ def one_sample(tmp_path):
     return manifest
 
 
-@pytest.mark.parametrize("samples", [0, 1, 14_799])
+def _tdms(path, samples: int) -> None:
+    """One channel of ``samples`` values at 20 kHz in g, as a DAQ writes it."""
+    from nptdms import ChannelObject, TdmsWriter
+
+    props = {"wf_increment": 1 / 20_000, "unit_string": "g"}
+    with TdmsWriter(path) as writer:
+        writer.write_segment([ChannelObject("ai0", "acc", np.full(samples, 0.25), props)])
+
+
+@pytest.mark.parametrize(
+    ("suffix", "samples"), [("npy", 0), ("npy", 1), ("npy", 14_799), ("tdms", 0), ("tdms", 1)]
+)
 def test_a_recording_shorter_than_one_window_is_refused_before_any_work(
-    tmp_path, sdt_main, samples
+    tmp_path, sdt_main, suffix, samples
 ):
     manifest = six_recordings(tmp_path)
-    np.save(tmp_path / "fault1.npy", np.full(samples, 0.25))
+    if suffix == "tdms":  # the issue's case: a TDMS channel with no sample or one
+        _tdms(tmp_path / "fault1.tdms", samples)
+        text = manifest.read_text().replace("fault1.npy,20000", "fault1.tdms,")
+        manifest.write_text(text)
+    else:
+        np.save(tmp_path / "fault1.npy", np.full(samples, 0.25))
     code, _, err = sdt_main(
         "benchmark", "--data", str(manifest), "--quick", "--classifiers", "lr", "--jobs", "2",
         "--no-report", "--out", str(tmp_path / "out"), "--cache-dir", str(tmp_path / "cache"),
@@ -39,7 +55,7 @@ def test_a_recording_shorter_than_one_window_is_refused_before_any_work(
     # 0.1 s settling + 0.64 s window at the reference's 20 kHz: 2000 + 12800 samples
     plural = "" if samples == 1 else "s"
     assert err.splitlines() == [
-        f"error: recording m/fault1/ch1 ({tmp_path / 'fault1.npy'}) holds {samples:,} "
+        f"error: recording m/fault1/ch1 ({tmp_path / f'fault1.{suffix}'}) holds {samples:,} "
         f"sample{plural} per acquisition ({samples / 20000:.4g} s at 20000 Hz), shorter than one "
         f"0.64 s window after 0.1 s settling (0.74 s: wilcoxon-786b10 needs 14,800 samples at "
         f"20000 Hz); leave it out of the data or give a longer recording"
