@@ -12,10 +12,17 @@ $(BIN)/python:
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 
-# the sensor catalogue is a second distribution (plugins/sensors-catalog), installed beside
+# the sensor catalogue is a second distribution (plugins/sensors-catalog), installed beside.
+# pip's output goes to $(LOG): an editable install prints setuptools' banners ("Please be
+# careful with folders in your working directory...") that are noise on every `make run`.
+# A failed install prints the whole log; a finished one still prints pip's ERROR lines.
+LOG := $(VENV)/install.log
 $(STAMP): pyproject.toml plugins/sensors-catalog/pyproject.toml | $(BIN)/python
-	$(BIN)/python -m pip install --quiet -e ".[dev]" -e plugins/sensors-catalog
-	touch $(STAMP)
+	@echo "installing sdt-framework into $(VENV) (pip's output: $(LOG))"
+	@$(BIN)/python -m pip install --quiet -e ".[dev]" -e plugins/sensors-catalog >$(LOG) 2>&1 \
+		|| { cat $(LOG) >&2; echo "pip install failed (its output above, also in $(LOG))" >&2; exit 1; }
+	@grep '^ERROR' $(LOG) >&2 || true
+	@touch $(STAMP)
 
 run: $(STAMP)
 	$(BIN)/sdt benchmark

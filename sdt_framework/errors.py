@@ -1,7 +1,10 @@
 """Error types a user can act on, and the one for a bug in sdt.
 
 Every error a user can cause derives from :class:`SDTError`. The CLI prints
-such errors as one line (no traceback) and exits with status 2. Anything else
+such errors as one line (no traceback) and exits with status 2. Every one
+pickles whatever its ``__init__`` takes (:meth:`SDTError.__reduce__`): an
+error raised in a worker process (loky, Dask) reaches the main process as
+itself, never as a pool broken by an error that cannot be rebuilt. Anything else
 is a bug: :class:`InternalError` is raised where sdt finds one of its own
 invariants broken, and the CLI reports it, like any other unexpected
 exception, as an ``internal error:`` line asking for a report, exit status
@@ -34,6 +37,14 @@ __all__ = [
 ]
 
 
+def _rebuild(cls: type[BaseException], args: tuple[object, ...], state: dict) -> BaseException:
+    """``cls`` with ``args`` and attributes ``state``, without calling its ``__init__``."""
+    exc = cls.__new__(cls, *args)
+    exc.args = args
+    exc.__dict__.update(state)
+    return exc
+
+
 class SDTError(Exception):
     """A problem in the user's input, configuration or environment.
 
@@ -41,6 +52,16 @@ class SDTError(Exception):
     """
 
     exit_code: int = 2
+
+    def __reduce__(self) -> tuple[object, ...]:
+        """Pickle as message and attributes, so a subclass whose ``__init__`` takes other
+        arguments than its message (:class:`UnknownNameError`) is rebuilt as it was.
+
+        Python's default rebuilds an exception by calling ``cls(*self.args)``: for
+        ``ChainInputError(sensor, label, reason)`` that call lacks two arguments, and a
+        worker's error broke the whole process pool (``BrokenProcessPool``).
+        """
+        return _rebuild, (type(self), self.args, dict(self.__dict__))
 
 
 #: exit status of a bug in sdt (EX_SOFTWARE of sysexits.h): never a user's mistake (2)

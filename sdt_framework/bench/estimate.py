@@ -10,9 +10,10 @@ The estimate is deliberately simple (and printed as an estimate):
   classifier in :data:`RUN_SECONDS` and ``n_train`` the run's training
   windows; a classifier not in the table (a plugin) is costed as the slowest
   built-in;
-- the sum is divided by the processes that can run at once,
-  ``min(--jobs, CPU cores)``; runs already stored in the results folder are
-  not counted;
+- the sum is divided by the processes that compute at once: the processes
+  started (:func:`~.pool.pool_size`: ``--jobs``, at most two per core and one
+  per task), but no more than the cores; runs already stored in the results
+  folder are not counted;
 - transfer pairs and node samples (``sample = "node"``) add runs: a pair's
   training set is its chains' windows, a node's its x channel's;
 - ``--units`` multiplies the runs, and the draws of a sensor with tolerances
@@ -20,7 +21,9 @@ The estimate is deliberately simple (and printed as an estimate):
 - memory: the process itself, plus per feature block (one recording x sensor
   x unit x repetition), per feature row (window) and per run, all held until
   the results are written, plus each process's chain run on the largest
-  recording; disk: one run file per run and ``features.parquet``.
+  recording, plus each worker process started on this machine (``PROCESS_BYTES``
+  each: 268 and 271 MB peak for the two loky workers of the run below with
+  ``--jobs 2``); disk: one run file per run and ``features.parquet``.
 
 The memory constants are peak resident sizes measured with ``/usr/bin/time -v``
 on ``sdt benchmark --quick --machines Motor-2 --classifiers lr --jobs 1`` with
@@ -52,6 +55,7 @@ from ..features import samples_for
 from ..specs import SensorSpec
 from ..stages import has_tolerances
 from .plan import Plan
+from .pool import cores, pool_size
 
 __all__ = [
     "ASSUMES",
@@ -213,14 +217,16 @@ def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
     to_do = max(0, runs - stored_runs)
     if runs:
         run_seconds *= to_do / runs
-    workers = max(1, min(config.n_jobs(), os.cpu_count() or 1))
+    workers = pool_size(config.n_jobs(), max(len(plan.recordings), to_do))
     largest = max(
         (r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings), default=0
     )
-    fixed = PROCESS_BYTES + workers * CHAIN_BYTES_PER_SAMPLE * largest
+    remote = config.backend == "dask" and config.scheduler  # the workers are elsewhere
+    here = 0 if remote or workers == 1 else workers  # worker processes on this machine
+    fixed = PROCESS_BYTES * (1 + here) + workers * CHAIN_BYTES_PER_SAMPLE * largest
     memory = fixed + BLOCK_BYTES * blocks + ROW_BYTES * rows + RUN_BYTES * runs
     disk = RUN_FILE_BYTES * to_do + ROW_FILE_BYTES * rows
-    seconds = (feature_seconds + run_seconds) / workers
+    seconds = (feature_seconds + run_seconds) / min(workers, cores())
     return Estimate(runs, to_do, draws, seconds, workers, memory, disk, fixed)
 
 

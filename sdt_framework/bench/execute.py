@@ -108,20 +108,21 @@ def _ignore_sigint_in_worker() -> None:
 
 
 class LocalExecutor:
-    """joblib processes on this machine (``jobs == 1`` runs in-process); joblib dispatches
-    the items in the order given."""
+    """joblib processes on this machine (``jobs == 1`` runs in-process), never more than
+    the items; joblib dispatches the items in the order given."""
 
     def __init__(self, jobs: int) -> None:
         self.jobs = jobs
 
     def map_unordered(self, fn: Callable[[Any], Any], items: Iterable[Any]) -> Iterator[Any]:
         items = list(items)
-        if self.jobs == 1 or len(items) <= 1:
+        jobs = min(self.jobs, len(items))  # a process without an item only costs its start
+        if jobs <= 1:
             yield from map(fn, items)
             return
         task = _IgnoringInterrupts(fn)
         with parallel_config(backend="loky", inner_max_num_threads=1):
-            yield from Parallel(n_jobs=self.jobs, return_as="generator_unordered")(
+            yield from Parallel(n_jobs=jobs, return_as="generator_unordered")(
                 delayed(task)(item) for item in items
             )
 
@@ -182,6 +183,9 @@ def open_executor(
     cache_dir: str = "",
 ) -> Iterator[Executor]:
     """The executor for ``backend``; for Dask, connect to ``scheduler`` or start a local one.
+
+    ``jobs`` is the local processes (or a local cluster's workers), already capped
+    (:func:`~.pool.pool_size`).
 
     A Dask cluster's workers are checked before it is returned
     (:func:`~.workers.check_workers`: same software, every data file in ``sources``

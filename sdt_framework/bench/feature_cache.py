@@ -9,18 +9,25 @@ one of the right shape, no longer matches its digest and is refused, so it is
 discarded and recomputed instead of changing results without a word. The
 digest detects changes by anyone who does not recompute it; it is not a
 signature against a deliberate forger with write access to the cache.
+
+An entry's key names the recording's file by the digest of its bytes
+(:func:`source_states`), never by its size and modification time alone.
 """
 
 from __future__ import annotations
 
 import hashlib
+import os
+from collections.abc import Iterable
 from pathlib import Path
 
 import numpy as np
 
+from ..data.digest import file_digest
+from ..data.recording import Recording
 from ..io import atomic_path
 
-__all__ = ["CachedBlock", "ChecksumMismatchError", "read_entry", "write_entry"]
+__all__ = ["CachedBlock", "ChecksumMismatchError", "read_entry", "source_states", "write_entry"]
 
 #: values, acquisition, window, and (samples at full scale, samples) as an int64 pair
 CachedBlock = tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]
@@ -79,3 +86,15 @@ def read_entry(path: Path, key: str, n_features: int) -> CachedBlock:
     if digest != _digest(key, arrays):
         raise ChecksumMismatchError("contents differ from their checksum")
     return arrays
+
+
+def source_states(recordings: Iterable[Recording], cache_dir: str | None) -> dict[str, str | None]:
+    """Source -> the digest of its file's bytes (None for generated data, which has no file),
+    each file hashed once, the digests remembered in ``cache_dir`` ({} without a cache: no
+    entry is keyed)."""
+    if cache_dir is None:
+        return {}
+    return {
+        r.source: file_digest(r.source, cache_dir) if os.path.isfile(r.source) else None
+        for r in recordings
+    }

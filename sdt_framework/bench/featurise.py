@@ -11,9 +11,11 @@ filters) run once per distinct setting (``chain.shared``) and are shared by
 the repetitions and by sensors that differ only in later stages, bit for bit.
 
 Feature blocks are cached on disk keyed by the dataset, the recording (and
-its file's size and modification time), the sensor's and the feature set's
-content hashes, the windowing and the noise seed, so adding a classifier to a
-finished benchmark recomputes no features. A failure is never cached. A
+the digest of its file's bytes, :mod:`sdt_framework.data.digest`), the
+sensor's and the feature set's content hashes, the windowing and the noise
+seed, so adding a classifier to a finished benchmark recomputes no features,
+and a file rewritten with other samples is never served from the cache, even
+with its size and modification time kept. A failure is never cached. A
 corrupt entry (truncated, not an archive, wrong arrays) or one whose contents
 no longer match their checksum (:mod:`.feature_cache`) is discarded and
 recomputed, and named in a note the orchestrator shows as a warning (workers
@@ -24,7 +26,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -40,11 +41,17 @@ from ..features import extract
 from ..seeding import derive_seed
 from ..specs import FeatureSetSpec, SensorSpec
 from ..stages import StageSpec, draw_unit, has_tolerances, is_random, uses_node
-from .feature_cache import CachedBlock, ChecksumMismatchError, read_entry, write_entry
+from .feature_cache import (
+    CachedBlock,
+    ChecksumMismatchError,
+    read_entry,
+    source_states,
+    write_entry,
+)
 
 __all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurise_recording", "noise_seed"]
 
-CACHE_VERSION = "2"  # 2: entries carry full-scale counts and a checksum
+CACHE_VERSION = "3"  # 2: full-scale counts and a checksum; 3: files known by their digest
 
 
 @dataclass(frozen=True)
@@ -100,21 +107,14 @@ def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) ->
     return derive_seed(seed, "noise", repeat, recording_id)
 
 
-def _source_state(source: str) -> list[int] | None:
-    """(size, mtime) of a recording's file, so an edited file is never served from cache."""
-    try:
-        stat = os.stat(source)
-    except OSError:  # generated data ("synthetic") has no file
-        return None
-    return [stat.st_size, stat.st_mtime_ns]
-
-
-def _key(job: FeatureJob, sensor: SensorSpec, chain_seed: int | None) -> str:
+def _key(
+    job: FeatureJob, sensor: SensorSpec, chain_seed: int | None, states: dict[str, str | None]
+) -> str:
     parts = {
         "version": CACHE_VERSION,
         "dataset": job.dataset_key,
         "recording": job.recording.metadata(),
-        "source_state": _source_state(job.recording.source),
+        "source_state": states[job.recording.source],
         "sensor": sensor.content_hash(),
         "features": job.feature_set.content_hash(),
         "window_s": job.window_s,
@@ -122,7 +122,7 @@ def _key(job: FeatureJob, sensor: SensorSpec, chain_seed: int | None) -> str:
         "seed": chain_seed,
     }
     if _needs_node(sensor, job):  # the other axes' samples enter the output
-        parts["node"] = [[r.metadata(), _source_state(r.source)] for r in job.node]
+        parts["node"] = [[r.metadata(), states[r.source]] for r in job.node]
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()
 
 
@@ -226,6 +226,7 @@ def featurise_recording(job: FeatureJob) -> RecordingFeatures:
     blocks = out.blocks
     n_features = len(job.feature_set.feature_names)
     done: dict[tuple[str, int, int | None], FeatureBlock] = {}
+    states = source_states((job.recording, *job.node), job.cache_dir)  # for the cache keys
     for group, repeat in ((g, r) for g in _by_prefix(job) for r in range(job.repeats)):
         for sensor, unit in group:
             chain_seed = noise_seed(sensor, job.seed, repeat, job.recording.recording_id)
@@ -234,7 +235,7 @@ def featurise_recording(job: FeatureJob) -> RecordingFeatures:
                     _relabel(done[(sensor.name, unit, chain_seed)], repeat, unit, "shared")
                 )
                 continue
-            key = _key(job, sensor, chain_seed)
+            key = "" if job.cache_dir is None else _key(job, sensor, chain_seed, states)
             path = _cache_path(job, key)
             arrays = None
             if path is not None and path.exists():

@@ -5,8 +5,8 @@ into a :class:`Plan`: the dataset opened (metadata only), the recordings of the
 selected machines and channels, the sensor, classifier and feature-set specs
 from the registry, and the train/test allocation with the (machine, scenario)
 pairs that cannot be scored. Unknown names, dataset options the loader does
-not take and acquisitions too short for one window are each one clear error
-here, so a sweep never fails half-way; a sensor the data is too slow for is
+not take and recordings too short for one window (:mod:`.lengths`) are each one
+clear error here, so a sweep never fails half-way; a sensor the data is too slow for is
 left out with its reason (:mod:`~sdt_framework.bench.sensor_set`).
 """
 
@@ -17,6 +17,7 @@ import json
 import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import pandas as pd
@@ -24,12 +25,13 @@ import pandas as pd
 from ..data.open import open_dataset
 from ..data.recording import Dataset, Recording
 from ..errors import SDTError
-from ..features import resolve_feature_set, samples_for
+from ..features import resolve_feature_set
 from ..registry import Registry
 from ..specs import ClassifierSpec, FeatureSetSpec, SensorSpec
 from ..stages import StageSpec
 from ..stages.units import drawn_stages
 from .config import BenchmarkConfig
+from .lengths import check_lengths
 from .node_samples import Node, resolve_nodes
 from .nodes import find_nodes, node_sensors
 from .scenarios import Run, check_allocation, load_allocation, rule_allocation
@@ -115,7 +117,6 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
                     f"transfer {pair.label!r}: {name} cannot simulate this data "
                     f"({skipped_sensors[name]}); drop the pair"
                 )
-    _check_rates(recordings, sensors, config)
 
     runs = sorted(
         {Run(r.machine, r.run, r.condition, r.severity) for r in recordings},
@@ -142,6 +143,7 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
             f"be scored (e.g. {machine} / {scenario}: {reason}); each needs a training and a "
             f"test run of every class: add runs, or give an allocation with --allocation"
         )
+    check_lengths(recordings, sensors, config.window_s, config.settle_s)
     users = node_sensors(sensors, registry)
     nodes = find_nodes(recordings, everything, config.axes, users) if users else {}
     if config.nodes and config.sample != "node":
@@ -203,16 +205,39 @@ def _resolve_sensors(names: list[str], registry: Registry) -> list[SensorSpec]:
     return sensors
 
 
+def _data_path(data: str | None, registry: Registry) -> str | None:
+    """``data`` as an absolute path, or a registered dataset's name as given.
+
+    Every recording's file is then named by its absolute path (a manifest's
+    relative paths are taken from its folder), which is what each worker
+    opens: a Dask worker started in another folder opens the same files.
+    """
+    if data is None:
+        return None
+    path = Path(data).expanduser()
+    if path.exists():
+        return os.path.abspath(path)
+    names = sorted(spec.name for spec in registry.datasets())
+    if data in names:
+        return data
+    where = "" if path.is_absolute() else f" (looked for in {os.getcwd()})"
+    raise SDTError(
+        f"--data {data} does not exist{where}; give an NLN-EMP folder, a .csv/.parquet "
+        f"manifest or a registered dataset ({', '.join(names)})"
+    )
+
+
 def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
     """Open the configured dataset; an option its loader does not take is a user error."""
     options = dict(config.dataset_options)
+    data = _data_path(config.data, registry)
     try:
         if config.dataset:
             spec = registry.dataset(config.dataset)
-            if spec.requires_path and not config.data:
+            if spec.requires_path and not data:
                 raise SDTError(f"dataset {config.dataset!r} needs --data PATH")
-            return spec.loader(config.data, **options)
-        return open_dataset(registry, config.data or "synthetic-pump", **options)
+            return spec.loader(data, **options)
+        return open_dataset(registry, data or "synthetic-pump", **options)
     except TypeError as exc:
         if "unexpected keyword argument" not in str(exc):
             raise
@@ -220,17 +245,3 @@ def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
             f"dataset_options {sorted(options)} do not fit the dataset "
             f"({config.dataset or config.data or 'synthetic-pump'}): {exc}"
         ) from None
-
-
-def _check_rates(recordings: list[Recording], sensors: list[SensorSpec], config) -> None:
-    for rate in sorted({r.sampling_rate_hz for r in recordings}):
-        example = next(r for r in recordings if r.sampling_rate_hz == rate)
-        seconds = example.samples_per_acquisition / rate
-        for sensor in sensors:
-            target = float(sensor.at_rate(rate).sampling_rate_hz)
-            need = samples_for(config.window_s, target) + samples_for(config.settle_s, target)
-            if seconds * target < need:
-                raise SDTError(
-                    f"acquisitions of {seconds:g} s are too short for one {config.window_s} s "
-                    f"window after {config.settle_s} s settling (e.g. {example.source})"
-                )

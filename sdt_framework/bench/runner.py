@@ -34,6 +34,7 @@ from .featurise import FeatureBlock, FeatureJob, featurise_recording
 from .folder import claim_results_folder
 from .folder_lock import holds_results_folder, unlock_results_folder
 from .plan import Plan, plan_benchmark
+from .pool import pool_size
 from .saturation import saturation_table
 from .schedule import (
     learn_factors,
@@ -202,7 +203,7 @@ def _run(
     task_seconds = {"features": 0.0, "classify": 0.0}
     sources = [r.source for r in plan.recordings]
     with open_executor(
-        config.backend, config.n_jobs(), config.scheduler, sources, str(cache_dir)
+        config.backend, pool_size(config.n_jobs()), config.scheduler, sources, str(cache_dir)
     ) as executor:
         start = time.perf_counter()
         blocks: list[FeatureBlock] = []

@@ -163,9 +163,9 @@ def benchmark(
 
       sdt benchmark --quick --out results/first-look
 
-      sdt benchmark --sensors adxl345,adxl357 --classifiers lr,rf --repeats 5
+      sdt benchmark --sensors wilcoxon-786b10,adxl345,adxl357 --classifiers lr,rf --repeats 5
 
-      sdt benchmark --quick --sensors "adxl355\\[range=8g],iis3dwb,mpu6050"
+      sdt benchmark --quick --sensors "wilcoxon-786b10,adxl355\\[range=8g],iis3dwb,mpu6050"
 
       sdt benchmark --data ~/data/NLN-EMP --out results/nln   # needs NLN-EMP downloaded (README)
 
@@ -241,6 +241,7 @@ def _locked_run(
     from ..bench.output import write_outputs
     from ..bench.runner import plan_benchmark, preflight, run_benchmark
     from ..bench.saturation import saturation_lines, saturation_summary
+    from .benchmark_notes import start_lines
     from .planned import check_size, print_skipped
 
     plan = plan_benchmark(config, registry(ctx))
@@ -267,6 +268,8 @@ def _locked_run(
         soft_wrap=True,
     )
     _say("note:", "yellow", f"this benchmark is {size.line()} ({ASSUMES})")
+    for label, line in start_lines(plan, size):
+        _say(label, "yellow", line)
     from ..data.sizes import building
 
     reduce = "process less data at once (shorter or fewer recordings, fewer --jobs)"

@@ -1,11 +1,12 @@
-"""Local cache of parsed arrays, keyed by the source file's path, size and mtime.
+"""Local cache of parsed arrays, keyed by the source file's path and the digest of its bytes.
 
 Parsing a 100 MB NLN-EMP CSV takes a fraction of a second with pyarrow but
 the archive is ~80 GB; a second pass (another scenario, another sensor) should
 not parse again. Parsed arrays are stored as ``.npz`` files holding the array
 and a SHA-256 digest of it and its key (as the feature cache's entries do);
-the key changes when the source file is modified (size or mtime), so a stale
-entry is never used. Writes are atomic, and failures are never cached. An
+the key changes when the source file's bytes do (:mod:`.digest`: a file
+rewritten with its size and mtime kept, by ``cp -p`` or ``rsync -a``, too), so
+a stale entry is never used. Writes are atomic, and failures are never cached. An
 entry that is corrupt (truncated, foreign) or whose contents were changed after
 it was written (its digest does not match: a shared or copied cache folder, a
 damaged disk) is named in one :class:`CacheEntryWarning`, discarded and
@@ -26,6 +27,7 @@ import numpy as np
 
 from ..errors import SDTError, SDTWarning
 from ..io import atomic_path
+from .digest import file_digest
 
 __all__ = [
     "CORRUPT_ENTRY_ERRORS",
@@ -111,7 +113,7 @@ def _read_entry(path: Path, key: str) -> np.ndarray:
 
 
 class ArrayCache:
-    """A folder of ``.npz`` entries, one per (source file, size, mtime, variant).
+    """A folder of ``.npz`` entries, one per (source file, its digest, variant).
 
     Parameters
     ----------
@@ -121,7 +123,7 @@ class ArrayCache:
         False turns the cache into a pass-through (always parse, never write).
     """
 
-    VERSION = "2"  # 2: .npz entries with a digest (1: bare .npy, no longer read)
+    VERSION = "3"  # 2: .npz entries with a digest (1: bare .npy); 3: sources by their digest
 
     def __init__(self, root: str | os.PathLike[str] | None = None, *, enabled: bool = True) -> None:
         self.enabled = enabled
@@ -131,10 +133,9 @@ class ArrayCache:
             self.root = default_cache_dir() if enabled else Path()
 
     def key(self, source: str | os.PathLike[str], variant: str = "") -> str:
-        """Hex key of a source file in its current state (path, size, mtime)."""
+        """Hex key of a source file in its current state (path, digest of its bytes)."""
         path = Path(source).resolve()
-        stat = path.stat()
-        parts = [self.VERSION, str(path), str(stat.st_size), str(stat.st_mtime_ns), variant]
+        parts = [self.VERSION, str(path), file_digest(path, self.root), variant]
         text = "\x1f".join(parts)
         return hashlib.sha256(text.encode()).hexdigest()[:32]
 

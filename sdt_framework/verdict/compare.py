@@ -70,6 +70,8 @@ class Comparison:
     ranking_note: str
     #: pairs left out because one side has no successful run (see :func:`.inputs.unpaired_runs`)
     unpaired: pd.DataFrame = field(default_factory=pd.DataFrame)
+    #: (machine, scenario) -> (the classes with a single physical test run there, classes)
+    single_run_classes: dict[tuple[str, str], tuple[list[str], int]] = field(default_factory=dict)
 
     @property
     def candidates(self) -> list[str]:
@@ -104,13 +106,28 @@ def _pivot(ok: pd.DataFrame, cells: list[str], treatment: str) -> pd.DataFrame:
     return ok.set_index(keys)["macro_f1"].unstack(treatment)
 
 
-def _test_runs(allocation: pd.DataFrame | None, groups: list[str]) -> pd.Series | None:
-    """Fewest test runs of any class, per (machine, scenario), from allocation.csv."""
+def _test_runs(allocation: pd.DataFrame | None) -> pd.Series | None:
+    """Test runs of each class, per (machine, scenario, condition), from allocation.csv."""
     if allocation is None or not {"machine", "scenario", "condition", "side"} <= set(allocation):
         return None
     test = allocation[allocation["side"] == "test"]
-    per_class = test.groupby(["machine", "scenario", "condition"])["run"].nunique()
-    return per_class.groupby(level=["machine", "scenario"]).min()
+    return test.groupby(["machine", "scenario", "condition"])["run"].nunique()
+
+
+def _single_run_classes(
+    per_class: pd.Series | None,
+) -> dict[tuple[str, str], tuple[list[str], int]]:
+    """(machine, scenario) -> (the classes tested on one physical run there, all its classes)."""
+    if per_class is None:
+        return {}
+    single: dict[tuple[str, str], list[str]] = {}
+    classes: dict[tuple[str, str], int] = {}
+    for (machine, scenario, condition), runs in per_class.items():
+        cell = (str(machine), str(scenario))
+        classes[cell] = classes.get(cell, 0) + 1
+        if runs == 1:
+            single.setdefault(cell, []).append(str(condition))
+    return {cell: (sorted(names), classes[cell]) for cell, names in single.items()}
 
 
 def compare(
@@ -187,10 +204,11 @@ def compare(
     table["p_holm"] = np.nan
     table.loc[is_cell, "p_holm"] = holm(table.loc[is_cell, "p_value"].to_numpy())
     table["p_tost"] = tost_pvalue(table["delta"], table["sd"], table["n_repeats"], margin)
-    test_runs = _test_runs(allocation, groups)
-    if test_runs is not None and {"machine", "scenario"} <= set(table):
+    per_class = _test_runs(allocation)
+    if per_class is not None and {"machine", "scenario"} <= set(table):
+        fewest = per_class.groupby(level=["machine", "scenario"]).min()
         index = pd.MultiIndex.from_frame(table[["machine", "scenario"]].astype(object))
-        table["test_runs_per_class"] = test_runs.reindex(index).to_numpy()
+        table["test_runs_per_class"] = fewest.reindex(index).to_numpy()
     labels = [
         combine(
             (r.ci_low, r.ci_high),
@@ -219,7 +237,18 @@ def compare(
             f"({', '.join(cells)}); here {blocks.shape[1]} and {blocks.shape[0]}"
         )
     return Comparison(
-        baseline, margin, alpha, treatment, cells, groups, table, means, ranking, note, unpaired
+        baseline,
+        margin,
+        alpha,
+        treatment,
+        cells,
+        groups,
+        table,
+        means,
+        ranking,
+        note,
+        unpaired,
+        _single_run_classes(per_class),
     )
 
 

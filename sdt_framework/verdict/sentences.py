@@ -156,11 +156,15 @@ def _caveats(comparison: Comparison) -> list[Finding]:
     single = table[(table["level"] == "cell") & (table["test_runs_per_class"] == 1)]
     if single.empty:
         return []
-    where = sorted({f"{r.machine} {r.scenario}" for r in single.itertuples()})
+    where = []
+    for cell in sorted({(str(r.machine), str(r.scenario)) for r in single.itertuples()}):
+        names, count = comparison.single_run_classes.get(cell, ([], 0))
+        which = "every class" if names and len(names) == count else ", ".join(names)
+        where.append(" ".join(cell) + (f" ({which})" if which else ""))
     return [
         Finding(
             "caveat",
-            f"some class has a single physical test run in {', '.join(where)}: the recording CI "
+            f"classes with a single physical test run: {', '.join(where)}: the recording CI "
             "there resamples that run's channels (simultaneous views of one event), not runs, so "
             "it understates run-to-run variation.",
         )
