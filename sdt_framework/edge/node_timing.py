@@ -36,9 +36,6 @@ class IntervalError(SDTError):
         self.problem = problem
         self.remedy = remedy
 
-    def __reduce__(self):  # a worker's error crosses process boundaries intact
-        return (type(self), (self.problem, self.remedy))
-
 
 @dataclass(frozen=True)
 class Timing:
