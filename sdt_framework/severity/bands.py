@@ -63,7 +63,8 @@ def vrms_bands(
                 "high_hz": covered,
                 "bandwidth_hz": np.nan if width is None else float(width),
                 "clipped": clipped,
-                "label": band_label(low, covered) + (" (clipped)" if clipped else ""),
+                "label": band_label(low, covered)
+                + (" (clipped)" if clipped else " (not checked)" if width is None else ""),
             }
         )
         if width is None:
