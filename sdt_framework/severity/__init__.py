@@ -23,8 +23,9 @@ window_agreement(features, reference, assignments) -> DataFrame
     intervals (the objective ``sdt explore`` checks per design point).
 RULE, CriterionII, alarm_thresholds, alarm_bits
     The criterion II rules (``criterion2.toml``, with clauses) and their thresholds.
-defect_frequencies, BEARINGS ; envelope_spectrum, velocity_spectrum, asd
-    Bearing defect lines and the spectra the field reads, with their scaling (the
+defect_frequencies, defect_lines, BEARINGS ; envelope_spectrum, velocity_spectrum, asd
+    Bearing defect lines (``defect_lines``: a ball fault at 2 x BSF) and the spectra
+    the field reads, with their scaling (the
     velocity spectrum's ``overall`` computed with the window's ENBW).
 estimate_running_speed -> SpeedEstimate ; running_speed
     The shaft speed off the spectrum, away from mains lines, with its confidence.
@@ -36,7 +37,7 @@ from .agreement import Agreement, paired_zones, window_agreement, zone_agreement
 from .alarms import ALARM_FRACTION, HEADROOM, RULE, CriterionII, alarm_bits, alarm_thresholds
 from .assign import DEFAULT_TABLES, PUMP_PROXY, assign_tables
 from .bands import band_label, sensor_bandwidths, vrms_bands
-from .bearings import BEARINGS, defect_frequencies, defect_orders
+from .bearings import BEARINGS, defect_frequencies, defect_lines, defect_orders
 from .conditions import condition_zones
 from .spectra import (
     LOW_EDGE_LINES,
@@ -91,6 +92,7 @@ __all__ = [
     "chain_bandwidth",
     "condition_zones",
     "defect_frequencies",
+    "defect_lines",
     "defect_orders",
     "envelope_band",
     "envelope_spectrum",
