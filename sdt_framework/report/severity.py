@@ -179,13 +179,13 @@ def severity_blocks(
     blocks += [
         Paragraph(
             "How a condition-monitoring engineer grades the machine: each window's V_RMS "
-            "(velocity r.m.s., 10-1000 Hz, mm/s, clipped to what each sensor's chain passes) "
-            "in ISO zones A (new machine), B (unrestricted long-term operation), C (limited "
-            "period), D (damage), by each sensor and by the reference, windows paired one to "
-            "one (repetition 0). 'Better zone' is the dangerous error: the sensor reports a "
-            "healthier machine than the reference does. Intervals: 95 % percentile over 2000 "
-            "resamples of the recordings within each condition, as `sdt compare` gives them "
-            "for Macro F1."
+            "(velocity r.m.s. over 10-1000 Hz, or up to where a sensor's chain stops when "
+            "that is lower, mm/s) in ISO zones A (new machine), B (unrestricted long-term "
+            "operation), C (limited period), D (damage), by each sensor and by the reference, "
+            "windows paired one to one (repetition 0). 'Better zone' is the dangerous error: "
+            "the sensor reports a healthier machine than the reference does. Intervals: 95 % "
+            "percentile over 2000 resamples of the recordings within each condition, as `sdt "
+            "compare` gives them for Macro F1."
         ),
         *_bands(agreement),
         Heading("Zone tables used", 3),
