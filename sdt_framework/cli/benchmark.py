@@ -249,7 +249,8 @@ def _locked_run(
         from ..severity import assign_tables
 
         machines = sorted({r.machine for r in plan.recordings})
-        assign_tables(machines, configured=config.zones, where="[benchmark] zones")
+        where, window_s = "[benchmark] zones", config.window_s
+        assign_tables(machines, configured=config.zones, where=where, window_s=window_s)
     size = check_size(
         plan,
         out_dir,

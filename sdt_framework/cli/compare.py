@@ -12,7 +12,7 @@ from rich.table import Table
 from rich.text import Text
 
 from ..errors import SDTError
-from .common import console, print_json, print_table, warn
+from .common import console, print_json, print_table, registry, warn
 from .outdir import output_folder
 
 __all__ = ["compare"]
@@ -156,6 +156,7 @@ def _two_folders(folders: list[Any], baseline: str | None) -> tuple[dict[str, An
 
 
 def compare(
+    ctx: typer.Context,
     results_dirs: Annotated[
         list[Path],
         typer.Argument(
@@ -209,8 +210,8 @@ def compare(
     partner are named in a warning; a per_recording.parquet that does not
     cover every run is refused (one line says how to rewrite it). With one
     folder, also the ISO zone agreement of every sensor with the reference
-    (V_RMS graded A-D per window, the dangerous better-zone share) and the
-    ISO 20816-1 criterion II alarm agreement, from features.parquet.
+    (V_RMS graded A-D per window, the dangerous better-zone share), the zone
+    per condition and criterion II alarms on each sensor's own baseline.
 
     Example:
 
@@ -259,7 +260,8 @@ def compare(
     findings = verdict(comparison)
     severity, note = None, "two folders: zone agreement is given for one folder"
     if len(folders) == 1:
-        severity, note = severity_agreement(folders[0], zones, comparison.baseline)
+        reg = registry(ctx)
+        severity, note = severity_agreement(folders[0], zones, comparison.baseline, registry=reg)
     if as_json:
         ranking = comparison.ranking
         print_json(

@@ -8,22 +8,24 @@ from typing import Any
 from rich.table import Table
 
 from ..errors import SDTError
-from .common import console, print_table
+from .common import console, print_table, warn
 
 __all__ = ["check_zones", "print_severity", "severity_agreement", "severity_json"]
 
 
 def severity_agreement(
-    folder: Any, zones: list[str] | None, reference: str, seed: int = 0
+    folder: Any, zones: list[str] | None, reference: str, seed: int = 0, registry: Any = None
 ) -> tuple[Any, str]:
     """Zone agreement of ``folder``'s sensors with ``reference`` (the comparison's baseline).
 
-    The tables: ``--zones``, else the folder's ``[benchmark] zones``, else the defaults.
+    The tables: ``--zones``, else the folder's ``[benchmark] zones``, else the
+    defaults. With ``registry``, each sensor's V_RMS band is checked against
+    its chain.
 
     None and the reason when it cannot be computed (no features, no table, no
     windows of ``reference``); a bad ``--zones`` value is an error.
     """
-    from ..severity import assign_tables, zone_agreement
+    from ..severity import assign_tables, sensor_bandwidths, zone_agreement
 
     features = folder.features
     if features is None or features.empty or "V_RMS" not in features.columns:
@@ -34,20 +36,33 @@ def severity_agreement(
         zones or [],
         configured=config.zones if config is not None else None,
         where=f"{folder.path / 'config.toml'}: [benchmark] zones",
+        window_s=config.window_s if config is not None else None,
     )
     if not assignments:
         return None, "no zone table for these machines; give --zones TABLE or MACHINE=TABLE"
     if not (features["sensor"] == reference).any():
         return None, f"features.parquet has no windows of {reference!r} to grade against"
-    return zone_agreement(features, reference, assignments, seed=seed), ""
+    bandwidths = None
+    if registry is not None:
+        bandwidths = sensor_bandwidths(features["sensor"].unique(), registry.sensor)
+    return zone_agreement(features, reference, assignments, seed=seed, bandwidths=bandwidths), ""
 
 
 def _pct(value: float) -> str:
     return "–" if value != value else f"{100 * value:.1f} %"
 
 
+def _band(agreement: Any, sensor: str) -> str:
+    bands = agreement.bands
+    row = bands[bands["sensor"] == sensor]
+    return "10-1000 Hz (not checked)" if row.empty else str(row["label"].iloc[0])
+
+
 def print_severity(agreement: Any) -> None:
-    """One row per machine and sensor, pooled over channels: zone and alarm agreement."""
+    """Per machine and sensor, pooled over channels: zone and alarm agreement; then the zone
+    per condition, the tables used and a warning per sensor whose V_RMS band is clipped."""
+    from ..report.severity_tables import condition_cells
+
     zones, alarms = agreement.zones, agreement.alarms
     pooled = zones["channel"] == "all"
     keys = ["machine", "channel", "sensor"]
@@ -56,27 +71,50 @@ def print_severity(agreement: Any) -> None:
         title=f"ISO zones of V_RMS (10-1000 Hz) against {agreement.reference}, all channels",
         title_justify="left",
     )
-    for column in ("machine", "sensor", "same zone [95 % CI]", "better zone", "alarm as ref"):
+    for column in ("machine", "sensor", "V_RMS band", "same zone [95 % CI]", "better zone"):
         out.add_column(column)
-    out.add_column("false alarms (ref)")
+    for column in ("alarm as ref, own baseline", "on ref's baseline", "false alarms (ref)"):
+        out.add_column(column)
     for r in merged.itertuples():
         ci = "" if r.ci_low != r.ci_low else f" [{100 * r.ci_low:.1f}, {100 * r.ci_high:.1f}]"
         out.add_row(
             r.machine,
             r.sensor,
+            _band(agreement, r.sensor),
             f"{_pct(r.share_same)}{ci}",
             _pct(r.share_better),
             _pct(r.fault_alarm_same),
+            _pct(r.fault_alarm_same_refbase),
             f"{_pct(r.false_alarm_sensor)} ({_pct(r.false_alarm_ref)})",
         )
     print_table(out)
+    sensors, rows = condition_cells(agreement)
+    per = Table(
+        title="ISO zone per condition: median V_RMS (mm/s) at the worst channel, share of its "
+        "windows in that zone (≠: not the reference's zone)",
+        title_justify="left",
+    )
+    for column in ("machine", "condition", *sensors):
+        per.add_column(column)
+    for row in rows:
+        per.add_row(*row)
+    print_table(per)
+    rule = agreement.rule
+    console.print(
+        f"alarms: criterion II ({rule.source}) on each sensor's own healthy baseline, "
+        "decreases counted; 'on ref's baseline' judges the sensor by the reference's",
+        highlight=False,
+        soft_wrap=True,
+    )
     for a in agreement.assignments.values():
-        text = f"{a.machine} zone table: {a.table.name} ({a.table.source})"
+        text = f"{a.machine} zone table: {a.table.name} ({a.table.source}); {a.reason}"
         console.print(text, highlight=False, soft_wrap=True)
+    for line in agreement.warnings:
+        warn(line)
 
 
 def severity_json(agreement: Any, note: str) -> dict[str, Any]:
-    """The severity figures for ``--json``: tables used, zones, confusion, alarms."""
+    """The severity figures for ``--json``: tables used, zones, conditions, confusion, alarms."""
     if agreement is None:
         return {"note": note}
 
@@ -89,13 +127,18 @@ def severity_json(agreement: Any, note: str) -> dict[str, Any]:
             a.machine: {
                 "name": a.table.name,
                 "source": a.table.source,
+                "band_hz": list(a.table.band_hz),
                 "boundaries_mm_s": a.table.boundaries.model_dump(),
                 "why": a.reason,
             }
             for a in agreement.assignments.values()
         },
         "unassigned": agreement.unassigned,
+        "bands": records(agreement.bands),
+        "warnings": agreement.warnings,
+        "alarm_rule": agreement.rule.source,
         "zones": records(agreement.zones),
+        "conditions": records(agreement.conditions),
         "confusion": records(agreement.confusion),
         "alarms": records(agreement.alarms),
     }
@@ -103,10 +146,12 @@ def severity_json(agreement: Any, note: str) -> dict[str, Any]:
 
 def check_zones(zones: list[str] | None) -> None:
     """Read and validate every --zones table before any other work (a bad one: one line)."""
-    from ..severity import resolve_table
+    from ..severity import band_problem, resolve_table
 
     for value in zones or []:
         table = value.rpartition("=")[2]
         if not table.strip():
             raise SDTError(f"--zones {value!r}: give TABLE or MACHINE=TABLE")
-        resolve_table(table)
+        problem = band_problem(resolve_table(table))
+        if problem:
+            raise SDTError(f"--zones {value!r}: {problem}")

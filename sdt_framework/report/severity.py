@@ -1,23 +1,34 @@
 """The report's "Severity and alarms" section: ISO zones and alarms, and the field's spectra.
 
 Tables from :mod:`sdt_framework.severity` on the folder's features.parquet
-(zone tables used and why, zone agreement with recording-level intervals,
-zone confusion per machine, criterion II alarms), then the spectral figures
+(the V_RMS band each sensor covers when its chain clips it, zone tables used
+and why, zone agreement with recording-level intervals, the zone per
+condition, zone confusion per machine, criterion II alarms on each sensor's
+own baseline: :mod:`.severity_tables`), then the spectral figures
 (:mod:`.figures_severity`).
 """
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from ..errors import SDTError
-from ..severity import ZONES, Agreement, assign_tables, zone_agreement
+from ..severity import (
+    ZONES,
+    Agreement,
+    assign_tables,
+    sensor_bandwidths,
+    vrms_bands,
+    zone_agreement,
+)
 from .document import Block, Heading, Paragraph, Table, literal
 from .figures_severity import spectral_blocks
 from .load import ResultsFolder
+from .severity_tables import alarm_table, condition_table
 
 __all__ = ["agreement_rows", "folder_agreement", "severity_blocks"]
 
@@ -110,51 +121,14 @@ def _confusions(agreement: Agreement) -> list[Block]:
     return blocks
 
 
-def _alarms(agreement: Agreement) -> Table:
-    rows = tuple(
-        (
-            literal(r.machine),
-            literal(r.channel),
-            literal(r.sensor),
-            "–" if np.isnan(r.baseline) else f"{r.baseline:.2f}",
-            "–" if np.isnan(r.alarm) else f"{r.alarm:.2f}{' *' if r.capped else ''}",
-            f"{r.trip:.2f}",
-            f"{_pct(r.fault_alarm_same)} {_ci(r.ci_low, r.ci_high)}",
-            f"{_pct(r.fault_alarm_sensor)} ({_pct(r.fault_alarm_ref)})",
-            _pct(r.missed),
-            f"{_pct(r.false_alarm_sensor)} ({_pct(r.false_alarm_ref)})",
-            _pct(r.trip_same),
-        )
-        for r in agreement.alarms.itertuples()
-    )
-    header = (
-        "machine",
-        "channel",
-        "sensor",
-        "baseline (mm/s)",
-        "ALARM",
-        "TRIP",
-        "fault windows alarmed as the reference [95 % CI]",
-        "fault windows alarmed (reference)",
-        "missed alarms",
-        "false alarms, healthy (reference)",
-        "TRIP as reference",
-    )
-    note = (
-        "* capped at 1.25 x B/C: the reference's healthy baseline is already above B/C "
-        "(zone C or D by this table), so the ALARM sits below it and healthy windows alarm"
-        if agreement.alarms["capped"].any()
-        else ""
-    )
-    return Table(header, rows, note)
-
-
-def folder_agreement(folder: ResultsFolder) -> Agreement:
+def folder_agreement(folder: ResultsFolder, registry: Any = None) -> Agreement:
     """The folder's zone and alarm agreement with the reference, computed once.
 
     The "Severity and alarms" section and the decision table both show it;
     its recording bootstrap is the costly part, so the result (or the
-    :class:`SDTError` saying why there is none) is kept on the folder.
+    :class:`SDTError` saying why there is none) is kept on the folder. With a
+    ``registry``, the band each sensor's V_RMS covers is checked against its
+    chain (added to a kept result that was computed without one).
     """
     if folder.agreement is None:
         try:
@@ -163,6 +137,10 @@ def folder_agreement(folder: ResultsFolder) -> Agreement:
             folder.agreement = exc
     if isinstance(folder.agreement, SDTError):
         raise folder.agreement
+    if registry is not None and folder.agreement.bands.empty:
+        sensors = [folder.agreement.reference, *sorted(folder.agreement.zones["sensor"].unique())]
+        bands, warnings = vrms_bands(sensor_bandwidths(sensors, registry.sensor))
+        folder.agreement = replace(folder.agreement, bands=bands, warnings=warnings)
     return folder.agreement
 
 
@@ -175,9 +153,17 @@ def _agreement(folder: ResultsFolder) -> Agreement:
         sorted(features["machine"].unique()),
         configured=config.zones if config is not None else None,
         where=f"{folder.path / 'config.toml'}: [benchmark] zones",
+        window_s=config.window_s if config is not None else None,
     )
     seed = config.seed if config is not None else 0
     return zone_agreement(features, folder.reference, assignments, seed=seed)
+
+
+def _bands(agreement: Agreement) -> list[Block]:
+    """The V_RMS band each sensor covers, when one is clipped (or not checked)."""
+    if not agreement.warnings:
+        return []
+    return [Paragraph("V_RMS band: " + "; ".join(literal(w) for w in agreement.warnings) + ".")]
 
 
 def severity_blocks(
@@ -186,33 +172,44 @@ def severity_blocks(
     """The whole section; a note instead of the tables when features.parquet is absent."""
     blocks: list[Block] = [Heading("Severity and alarms", 2)]
     try:
-        agreement = folder_agreement(folder)
+        agreement = folder_agreement(folder, registry)
     except SDTError as exc:
         return [*blocks, Paragraph(f"Not shown: {literal(exc)}")]
+    rule = agreement.rule
     blocks += [
         Paragraph(
             "How a condition-monitoring engineer grades the machine: each window's V_RMS "
-            "(velocity r.m.s., 10-1000 Hz, mm/s) in ISO zones A (new machine), B "
-            "(unrestricted long-term operation), C (limited period), D (damage), by each "
-            "sensor and by the reference, windows paired one to one (repetition 0). "
-            "'Better zone' is the dangerous error: the sensor reports a healthier machine "
-            "than the reference does. Intervals: 95 % percentile over 2000 resamples of the "
-            "recordings within each condition, as `sdt compare` gives them for Macro F1."
+            "(velocity r.m.s. over 10-1000 Hz, or up to where a sensor's chain stops when "
+            "that is lower, mm/s) in ISO zones A (new machine), B (unrestricted long-term "
+            "operation), C (limited period), D (damage), by each sensor and by the reference, "
+            "windows paired one to one (repetition 0). 'Better zone' is the dangerous error: "
+            "the sensor reports a healthier machine than the reference does. Intervals: 95 % "
+            "percentile over 2000 resamples of the recordings within each condition, as `sdt "
+            "compare` gives them for Macro F1."
         ),
+        *_bands(agreement),
         Heading("Zone tables used", 3),
         *_tables_used(agreement),
         Heading("Zone agreement", 3),
         Table(AGREEMENT_HEADER, tuple(agreement_rows(agreement))),
+        Heading("Zone per condition", 3),
+        condition_table(agreement),
         Heading("Zone confusion (all channels)", 3),
         *_confusions(agreement),
-        Heading("Alarms (ISO 20816-1 criterion II)", 3),
+        Heading(f"Alarms (criterion II, {rule.source})", 3),
         Paragraph(
-            "Per machine and channel, the reference's healthy windows set the baseline "
-            "(mean V_RMS); ALARM = min(baseline + 0.25 x B/C, 1.25 x B/C) and TRIP = "
-            "1.25 x C/D (ISO 20816-1:2016 5.4.1, 5.4.2). The alarm is one bit a node can "
-            "send per report: the table says how often each sensor sends the reference's "
-            "bit on fault windows, and how often it alarms on healthy windows."
+            "Criterion II is relative: each measuring point alarms on a change from its own "
+            "baseline. Per machine, channel and sensor, the sensor's own healthy windows set "
+            "its baseline (mean V_RMS); its bit is raised above ALARM = min(baseline + "
+            f"{rule.alarm_fraction:g} x B/C, {rule.alarm_headroom:g} x B/C) or below baseline "
+            f"- {rule.change_fraction:g} x B/C (a decrease is a change too); TRIP = "
+            f"{rule.trip_headroom:g} x C/D ({literal(rule.source)}, as transcribed in "
+            "docs/severity.md). The reference's bit uses the reference's baseline. The table "
+            "says how often each sensor sends the reference's bit on fault windows on its own "
+            "baseline and, beside it, on the reference's baseline (a node commissioned with "
+            "the reference's figures: there a gain error becomes an alarm disagreement), and "
+            "how often it alarms on healthy windows."
         ),
-        _alarms(agreement),
+        alarm_table(agreement),
     ]
     return blocks + spectral_blocks(folder, registry, figures_dir, colors)

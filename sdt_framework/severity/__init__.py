@@ -7,47 +7,56 @@ a notebook.
 
 Public API
 ----------
-ZoneTable, load_zone_file, resolve_table, builtin_tables, assign_tables, grade
+ZoneTable, load_zone_file, resolve_table, builtin_tables, grade, band_problem
     Zone tables as TOML data (ISO 10816-3 groups 1/2 rigid/flexible, ISO 20816-1
-    typical ranges, or a plant's own), validated; which table grades which machine.
-zone_agreement(features, reference, assignments) -> Agreement
-    Zone agreement, zone confusion, dangerous (better-zone) share and criterion II
-    alarm agreement per machine, channel and sensor, with recording-level intervals.
+    typical ranges, or a plant's own; 10-1000 Hz, or 2-1000 Hz below 600 r/min),
+    validated; ``band_problem`` says why windows cannot be graded by a table.
+assign_tables, DEFAULT_TABLES, PUMP_PROXY, Assignment
+    Which table grades which machine, and why (the pump end's proxy named).
+zone_agreement(features, reference, assignments, bandwidths=) -> Agreement
+    Zone agreement, zone confusion, dangerous (better-zone) share, criterion II
+    alarm agreement on each sensor's own baseline (and on the reference's, beside)
+    per machine, channel and sensor with recording-level intervals; the zone per
+    condition (``condition_zones``); the V_RMS band each sensor covers (``vrms_bands``).
 window_agreement(features, reference, assignments) -> DataFrame
     The pooled share of windows in the reference's zone per machine and sensor, no
     intervals (the objective ``sdt explore`` checks per design point).
-defect_frequencies, BEARINGS ; envelope_spectrum, velocity_spectrum, asd, running_speed
-    Bearing defect lines and the spectra the field reads, with their scaling.
+RULE, CriterionII, alarm_thresholds, alarm_bits
+    The criterion II rules (``criterion2.toml``, with clauses) and their thresholds.
+defect_frequencies, defect_lines, BEARINGS ; envelope_spectrum, velocity_spectrum, asd
+    Bearing defect lines (``defect_lines``: a ball fault at 2 x BSF) and the spectra
+    the field reads, with their scaling (the
+    velocity spectrum's ``overall`` computed with the window's ENBW).
+estimate_running_speed -> SpeedEstimate ; running_speed
+    The shaft speed off the spectrum, away from mains lines, with its confidence.
 """
 
 from __future__ import annotations
 
-from .agreement import (
-    ALARM_FRACTION,
-    HEADROOM,
-    Agreement,
-    alarm_thresholds,
-    paired_zones,
-    window_agreement,
-    zone_agreement,
-)
-from .bearings import BEARINGS, defect_frequencies, defect_orders
+from .agreement import Agreement, paired_zones, window_agreement, zone_agreement
+from .alarms import ALARM_FRACTION, HEADROOM, RULE, CriterionII, alarm_bits, alarm_thresholds
+from .assign import DEFAULT_TABLES, PUMP_PROXY, assign_tables
+from .bands import band_label, sensor_bandwidths, vrms_bands
+from .bearings import BEARINGS, defect_frequencies, defect_lines, defect_orders
+from .conditions import condition_zones
 from .spectra import (
+    LOW_EDGE_LINES,
     Spectrum,
     asd,
     chain_bandwidth,
     envelope_band,
     envelope_spectrum,
-    running_speed,
     velocity_spectrum,
 )
+from .speed import MAINS_HZ, SpeedEstimate, estimate_running_speed, running_speed
 from .tables import (
-    DEFAULT_TABLES,
+    ISO_BANDS_HZ,
     MACHINE_GROUPS,
+    V_RMS_BAND_HZ,
     ZONES,
     Assignment,
     ZoneTable,
-    assign_tables,
+    band_problem,
     builtin_tables,
     grade,
     load_zone_file,
@@ -59,27 +68,43 @@ __all__ = [
     "BEARINGS",
     "DEFAULT_TABLES",
     "HEADROOM",
+    "ISO_BANDS_HZ",
+    "LOW_EDGE_LINES",
     "MACHINE_GROUPS",
+    "MAINS_HZ",
+    "PUMP_PROXY",
+    "RULE",
+    "V_RMS_BAND_HZ",
     "ZONES",
     "Agreement",
     "Assignment",
+    "CriterionII",
     "Spectrum",
+    "SpeedEstimate",
     "ZoneTable",
+    "alarm_bits",
     "alarm_thresholds",
     "asd",
     "assign_tables",
+    "band_label",
+    "band_problem",
     "builtin_tables",
     "chain_bandwidth",
+    "condition_zones",
     "defect_frequencies",
+    "defect_lines",
     "defect_orders",
     "envelope_band",
     "envelope_spectrum",
+    "estimate_running_speed",
     "grade",
     "load_zone_file",
     "paired_zones",
     "resolve_table",
     "running_speed",
+    "sensor_bandwidths",
     "velocity_spectrum",
+    "vrms_bands",
     "window_agreement",
     "zone_agreement",
 ]

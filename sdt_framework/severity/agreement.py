@@ -8,13 +8,12 @@ windows graded in the same zone, the zone confusion matrix (reference rows,
 sensor columns) and the share graded in a *better* zone than the reference
 (the dangerous error: the node would report a healthier machine than it is).
 
-Alarms follow ISO 20816-1:2016 5.4 (criterion II): per machine and channel,
-the reference's healthy baseline (mean V_RMS of its healthy windows) sets
-ALARM = min(baseline + 0.25 x B/C, 1.25 x B/C) and TRIP = 1.25 x C/D; each
-sensor's windows are compared with these thresholds. Per sensor: the share of
-fault windows on which it raises the alarm as the reference does (both or
-neither), the alarms it misses, and its false alarms on healthy windows. The
-alarm is one bit a node can send per report.
+Alarms follow criterion II on each sensor's own healthy baseline, decreases
+counted, with the same windows judged on the reference's baseline beside
+(:mod:`.alarms`; ISO 10816-3:2009 5.3, 5.4.1, 5.4.2). Per machine, condition
+and level, the zone each sensor grades (:mod:`.conditions`). The band each
+sensor's V_RMS covers (the table's, clipped to its chain) is checked when the
+chains' bandwidths are given (:mod:`.bands`).
 
 Intervals are at the recording level, as ``sdt compare`` gives them for Macro
 F1 (:mod:`sdt_framework.verdict.recordings`): recordings are drawn with
@@ -23,6 +22,7 @@ replacement within each condition, and the share recomputed per draw.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -31,20 +31,13 @@ import pandas as pd
 from ..errors import SDTError
 from ..seeding import rng
 from ..verdict.recordings import stratified_weights
-from .tables import ZONES, Assignment
+from .alarms import RULE, CriterionII, alarm_bits, alarm_thresholds
+from .bands import vrms_bands
+from .conditions import condition_zones
+from .tables import ZONES, Assignment, band_problem
 
-__all__ = [
-    "ALARM_FRACTION",
-    "HEADROOM",
-    "Agreement",
-    "alarm_thresholds",
-    "paired_zones",
-    "window_agreement",
-    "zone_agreement",
-]
+__all__ = ["Agreement", "paired_zones", "window_agreement", "zone_agreement"]
 
-ALARM_FRACTION = 0.25  # ISO 20816-1:2016 5.3/5.4.1: a quarter of the B/C boundary
-HEADROOM = 1.25  # 5.4.1/5.4.2: ALARM <= 1.25 x B/C, TRIP <= 1.25 x C/D
 _WINDOW = ["machine", "channel", "recording_id", "acquisition", "window"]
 
 
@@ -58,6 +51,10 @@ class Agreement:
     alarms: pd.DataFrame  # thresholds and agreement per machine, channel, sensor
     assignments: dict[str, Assignment]
     unassigned: list[str]  # machines without a zone table (left out)
+    conditions: pd.DataFrame  # zone per machine, condition, level, channel, sensor
+    bands: pd.DataFrame  # the V_RMS band each sensor covers (empty: not checked)
+    warnings: list[str]  # one line per sensor whose band is clipped or not checked
+    rule: CriterionII = RULE
 
 
 def paired_zones(
@@ -74,6 +71,10 @@ def paired_zones(
             f"no zone table grades machine(s) {machines}; name one per machine with "
             f"zones = {{ MACHINE = 'TABLE' }} under [benchmark] or sdt compare --zones"
         )
+    for assignment in assignments.values():
+        problem = band_problem(assignment.table)
+        if problem:
+            raise SDTError(f"{assignment.machine}: {problem}")
     frame = features[features["machine"].isin(list(assignments))]
     if "unit" in frame.columns:  # per-unit runs: the first unit of each sensor
         frame = frame[frame["unit"] == frame.groupby("sensor")["unit"].transform("min")]
@@ -110,19 +111,6 @@ def window_agreement(
     ).reset_index()
 
 
-def alarm_thresholds(pairs: pd.DataFrame, assignments: dict[str, Assignment]) -> pd.DataFrame:
-    """ALARM and TRIP per machine and channel from the reference's healthy baseline."""
-    healthy = pairs[pairs["healthy"]].drop_duplicates(_WINDOW)
-    base = healthy.groupby(["machine", "channel"])["v_ref"].mean().rename("baseline").reset_index()
-    # float: an empty mapped column keeps the machines' string dtype, which arithmetic refuses
-    b_c = base["machine"].map(lambda m: assignments[m].table.boundaries.b_c).astype(float)
-    c_d = base["machine"].map(lambda m: assignments[m].table.boundaries.c_d).astype(float)
-    base["alarm"] = np.minimum(base["baseline"] + ALARM_FRACTION * b_c, HEADROOM * b_c)
-    base["capped"] = base["baseline"] + ALARM_FRACTION * b_c > HEADROOM * b_c  # baseline > B/C
-    base["trip"] = HEADROOM * c_d
-    return base
-
-
 def _interval(
     frame: pd.DataFrame, hit: str, key: tuple, n_boot: int, seed: int
 ) -> tuple[float, float]:
@@ -147,6 +135,37 @@ def _scopes(pairs: pd.DataFrame):
             yield machine, "all", sensor, rows
 
 
+def _alarm_row(rows: pd.DataFrame, channel: str, key: tuple, n_boot: int, seed: int) -> dict:
+    """Alarm agreement of one scope: own baseline, then the reference's baseline beside it."""
+    fault, healthy = rows[~rows["healthy"]], rows[rows["healthy"]]
+    low, high = _interval(fault, "alarm_same", (*key, "alarm"), n_boot, seed)
+    one = channel != "all"  # thresholds differ per channel: none for the pooled row
+    first = rows.iloc[0]
+    return {
+        "baseline": first["baseline"] if one else np.nan,
+        "alarm": first["alarm"] if one else np.nan,
+        "capped": bool(first["capped"]) if one else False,
+        "baseline_ref": first["baseline_ref"] if one else np.nan,
+        "alarm_ref": first["alarm_ref"] if one else np.nan,
+        "capped_ref": bool(first["capped_ref"]) if one else False,
+        "trip": first["trip"],
+        "n_fault": len(fault),
+        "n_healthy": len(healthy),
+        "fault_alarm_ref": fault["bit_ref"].mean(),
+        "fault_alarm_sensor": fault["bit_sensor"].mean(),
+        "fault_alarm_same": fault["alarm_same"].mean(),
+        "ci_low": low,
+        "ci_high": high,
+        "missed": (fault["bit_ref"] & ~fault["bit_sensor"]).mean(),
+        "false_alarm_ref": healthy["bit_ref"].mean(),
+        "false_alarm_sensor": healthy["bit_sensor"].mean(),
+        "fault_alarm_same_refbase": fault["alarm_same_refbase"].mean(),
+        "missed_refbase": (fault["bit_ref"] & ~fault["bit_refbase"]).mean(),
+        "false_alarm_sensor_refbase": healthy["bit_refbase"].mean(),
+        "trip_same": rows["trip_same"].mean(),
+    }
+
+
 def zone_agreement(
     features: pd.DataFrame,
     reference: str,
@@ -154,8 +173,13 @@ def zone_agreement(
     *,
     n_boot: int = 2000,
     seed: int = 0,
+    bandwidths: Mapping[str, float | None] | None = None,
 ) -> Agreement:
     """Zone and alarm agreement of each sensor with ``reference`` (see the module doc).
+
+    ``bandwidths`` (sensor -> its chain's bandwidth in Hz, :func:`.chain_bandwidth`)
+    checks the band each sensor's V_RMS covers; without it the band is not
+    checked and :attr:`Agreement.warnings` says so.
 
     Raises
     ------
@@ -176,22 +200,17 @@ def zone_agreement(
             f"{reference!r} (same machine, channel, recording, acquisition and window)"
         )
     thresholds = alarm_thresholds(pairs, assignments)
-    pairs = pairs.merge(thresholds, on=["machine", "channel"], how="left")
+    pairs = alarm_bits(pairs.merge(thresholds, on=["machine", "channel", "sensor"], how="left"))
     pairs["same"] = pairs["zone_ref"] == pairs["zone_sensor"]
     pairs["better"] = pairs["zone_sensor"] < pairs["zone_ref"]
-    pairs["alarm_ref"] = pairs["v_ref"] > pairs["alarm"]
-    pairs["alarm_sensor"] = pairs["v_sensor"] > pairs["alarm"]
-    pairs["alarm_same"] = pairs["alarm_ref"] == pairs["alarm_sensor"]
-    pairs["trip_same"] = (pairs["v_ref"] > pairs["trip"]) == (pairs["v_sensor"] > pairs["trip"])
     zones, alarms, confusion = [], [], []
     for machine, channel, sensor, rows in _scopes(pairs):
         key = (machine, channel, sensor)
         low, high = _interval(rows, "same", key, n_boot, seed)
+        head = {"machine": machine, "channel": channel, "sensor": sensor}
         zones.append(
             {
-                "machine": machine,
-                "channel": channel,
-                "sensor": sensor,
+                **head,
                 "table": assignments[machine].table.name,
                 "n_windows": len(rows),
                 "n_recordings": rows["recording_id"].nunique(),
@@ -209,30 +228,11 @@ def zone_agreement(
             for i in range(4)
             for j in range(4)
         ]
-        fault, healthy = rows[~rows["healthy"]], rows[rows["healthy"]]
-        a_low, a_high = _interval(fault, "alarm_same", (*key, "alarm"), n_boot, seed)
-        alarms.append(
-            {
-                "machine": machine,
-                "channel": channel,
-                "sensor": sensor,
-                "baseline": rows["baseline"].iloc[0] if channel != "all" else np.nan,
-                "alarm": rows["alarm"].iloc[0] if channel != "all" else np.nan,
-                "capped": bool(rows["capped"].iloc[0]) if channel != "all" else False,
-                "trip": rows["trip"].iloc[0],
-                "n_fault": len(fault),
-                "n_healthy": len(healthy),
-                "fault_alarm_ref": fault["alarm_ref"].mean(),
-                "fault_alarm_sensor": fault["alarm_sensor"].mean(),
-                "fault_alarm_same": fault["alarm_same"].mean(),
-                "ci_low": a_low,
-                "ci_high": a_high,
-                "missed": (fault["alarm_ref"] & ~fault["alarm_sensor"]).mean(),
-                "false_alarm_ref": healthy["alarm_ref"].mean(),
-                "false_alarm_sensor": healthy["alarm_sensor"].mean(),
-                "trip_same": rows["trip_same"].mean(),
-            }
-        )
+        alarms.append({**head, **_alarm_row(rows, channel, key, n_boot, seed)})
+    sensors = [reference, *sorted(pairs["sensor"].unique())]
+    bands, warnings = vrms_bands({s: (bandwidths or {}).get(s) for s in sensors})
+    if bandwidths is None:
+        bands, warnings = bands.iloc[:0], ["chain bandwidths not given: V_RMS bands not checked"]
     columns = ["machine", "channel", "sensor", "reference_zone", "sensor_zone", "count"]
     return Agreement(
         reference,
@@ -241,4 +241,7 @@ def zone_agreement(
         pd.DataFrame(alarms),
         assignments,
         unassigned,
+        condition_zones(pairs, reference, assignments),
+        bands,
+        warnings,
     )

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from ..data.synth_model import MOTOR_BEARING, PUMP_BEARING, Bearing
 
-__all__ = ["BEARINGS", "defect_frequencies", "defect_orders"]
+__all__ = ["BEARINGS", "defect_frequencies", "defect_lines", "defect_orders"]
 
 #: the bearings of the NLN-EMP / synthetic pump, by designation
 BEARINGS: dict[str, Bearing] = {MOTOR_BEARING.name: MOTOR_BEARING, PUMP_BEARING.name: PUMP_BEARING}
@@ -36,3 +36,22 @@ def defect_orders(bearing: Bearing) -> dict[str, float]:
 def defect_frequencies(bearing: Bearing, shaft_hz: float) -> dict[str, float]:
     """The four defect frequencies in Hz at shaft speed ``shaft_hz``."""
     return {name: order * shaft_hz for name, order in defect_orders(bearing).items()}
+
+
+def defect_lines(bearing: Bearing, shaft_hz: float) -> dict[str, float]:
+    """The lines an envelope spectrum shows a fault of each part at, in Hz: BPFO, BPFI,
+    2xBSF and FTF.
+
+    A defect on a ball strikes the inner and the outer race in turn, once each per
+    spin revolution, so its envelope shows 2 x BSF most clearly, not BSF (vibromera.eu
+    glossary "BSF"; bacdanvongbi.com "BSF": "2xBSF is the most prominent, because the
+    rolling element contacts both rings once per revolution"). The other three are
+    :func:`defect_frequencies`' lines.
+    """
+    lines = defect_frequencies(bearing, shaft_hz)
+    return {
+        "BPFO": lines["BPFO"],
+        "BPFI": lines["BPFI"],
+        "2xBSF": 2 * lines["BSF"],
+        "FTF": lines["FTF"],
+    }

@@ -1,23 +1,25 @@
 """Zone tables as data: ISO severity boundaries in user-editable TOML files, validated.
 
 A zone table is three boundaries of broad-band r.m.s. velocity (A/B, B/C,
-C/D in mm/s over 10-1000 Hz, the band of the features' V_RMS) with the
-document, edition and table they come from. The tables shipped with the
-package are ``iso10816-3.toml`` and ``iso20816-1.toml`` next to this module
-(sources in their comments and in docs/severity.md); a plant's own alarm
-limits are a file of the same form, given by path. A file holds one or more
-``[[table]]`` entries; ``FILE.toml#name`` picks one of several.
+C/D in mm/s) over the band ISO grades it in: 10-1000 Hz, or 2-1000 Hz for
+machines below 600 r/min (ISO 10816-3:2009 Annex A), with the document,
+edition and table they come from. The tables shipped with the package are
+``iso10816-3.toml`` and ``iso20816-1.toml`` next to this module (sources in
+their comments and in docs/severity.md); a plant's own alarm limits are a
+file of the same form, given by path. A file holds one or more ``[[table]]``
+entries; ``FILE.toml#name`` picks one of several.
 
 Every fault in a table (boundaries not increasing, an unknown machine group,
-a unit other than mm/s, another band, a boundary written as a boolean or a
-string: ``b_c = true`` is not 1 mm/s, ``"1.0"`` is text) is one
-:class:`SpecFileError` line.
+a unit other than mm/s, a band ISO does not grade in, a boundary written as a
+boolean or a string: ``b_c = true`` is not 1 mm/s, ``"1.0"`` is text) is one
+:class:`SpecFileError` line. A 2-1000 Hz table is a valid table, but the
+windows' V_RMS feature is 10-1000 Hz: :func:`assign_tables` refuses to grade
+windows by it, with the reason (:func:`band_problem`).
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
@@ -31,12 +33,13 @@ from ..toml_files import parse_toml, read_toml, validate_file
 
 __all__ = [
     "BUILTIN_FILES",
-    "DEFAULT_TABLES",
+    "ISO_BANDS_HZ",
     "MACHINE_GROUPS",
+    "V_RMS_BAND_HZ",
     "ZONES",
     "Assignment",
     "ZoneTable",
-    "assign_tables",
+    "band_problem",
     "builtin_tables",
     "grade",
     "load_zone_file",
@@ -48,20 +51,9 @@ MACHINE_GROUPS = ("group 1", "group 2", "typical", "plant", "pump category I", "
 BUILTIN_FILES = ("iso10816-3.toml", "iso20816-1.toml")
 #: the band of the V_RMS feature the tables grade (plugins/features/paper8.py)
 V_RMS_BAND_HZ = (10.0, 1000.0)
-
-#: which table grades which machine of the two pump datasets, and why
-DEFAULT_TABLES: dict[str, tuple[str, str]] = {
-    "Motor-2": (
-        "iso20816-1-typical-low",
-        "11 kW 4-pole set: below ISO 10816-3's 15 kW, so ISO 20816-1's typical ranges at "
-        "their low end, where Table C.1 puts motors up to 15 kW",
-    ),
-    "Motor-4": (
-        "iso10816-3-group2-rigid",
-        "22 kW 2-pole set: ISO 10816-3 group 2 (15-300 kW); rigid, the stricter support "
-        "class, as no source gives the rig's support natural frequency",
-    ),
-}
+#: the band ISO 10816-3:2009 Annex A grades machines below 600 r/min in
+LOW_SPEED_BAND_HZ = (2.0, 1000.0)
+ISO_BANDS_HZ = (V_RMS_BAND_HZ, LOW_SPEED_BAND_HZ)
 
 
 def _number(value: object) -> object:
@@ -144,12 +136,18 @@ class ZoneTable(BaseModel):
     @field_validator("band_hz")
     @classmethod
     def _band(cls, value: tuple[float, float]) -> tuple[float, float]:
-        if tuple(map(float, value)) != V_RMS_BAND_HZ:
+        if tuple(map(float, value)) not in ISO_BANDS_HZ:
             raise ValueError(
-                f"band {list(value)} Hz is not the 10-1000 Hz band of the V_RMS feature the "
-                f"tables grade; write band_hz = [10.0, 1000.0]"
+                f"band {list(value)} Hz is not a band ISO grades V_RMS in; write band_hz = "
+                f"[10.0, 1000.0], or [2.0, 1000.0] for a machine below 600 r/min "
+                f"(ISO 10816-3:2009 Annex A)"
             )
         return value
+
+    @property
+    def band_text(self) -> str:
+        """The table's band, "10-1000 Hz"."""
+        return f"{self.band_hz[0]:g}-{self.band_hz[1]:g} Hz"
 
     @property
     def cuts(self) -> np.ndarray:
@@ -167,6 +165,28 @@ class _ZoneFile(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     table: list[ZoneTable] = Field(min_length=1)
+
+
+def band_problem(table: ZoneTable, window_s: float | None = None) -> str | None:
+    """Why the windows' V_RMS (10-1000 Hz) cannot be graded by ``table``; None if it can.
+
+    A 2-1000 Hz table grades a value the features do not hold: their V_RMS is
+    10-1000 Hz (paper8), and a 2 Hz low edge needs 4 lines below it, so
+    windows of at least 2 s (the features' windows are 0.64 s by default).
+    Grading a 10-1000 Hz value against it would read low without saying so.
+    """
+    if tuple(map(float, table.band_hz)) == V_RMS_BAND_HZ:
+        return None
+    windows = f" over {window_s:g} s windows" if window_s else ""
+    need = 4 / table.band_hz[0]
+    return (
+        f"zone table {table.name!r} grades V_RMS over {table.band_text} (machines below 600 "
+        f"r/min); the features' V_RMS is 10-1000 Hz{windows}, and a {table.band_hz[0]:g} Hz "
+        f"edge needs windows of at least {need:g} s: grade the windows with a 10-1000 Hz "
+        f"table, or read the {table.band_text} overall off a whole recording "
+        f"(severity.velocity_spectrum(x, fs, band=({table.band_hz[0]:g}, "
+        f"{table.band_hz[1]:g})).overall)"
+    )
 
 
 def grade(v_rms: np.ndarray, table: ZoneTable) -> np.ndarray:
@@ -227,54 +247,8 @@ def _names(tables: list[ZoneTable]) -> str:
 
 @dataclass(frozen=True)
 class Assignment:
-    """The table that grades one machine, and why it was chosen."""
+    """The table that grades one machine, and why it was chosen (:mod:`.assign`)."""
 
     machine: str
     table: ZoneTable
     reason: str
-
-
-def assign_tables(
-    machines: list[str],
-    choices: list[str] = (),
-    configured: Mapping[str, str] | None = None,
-    where: str = "[benchmark] zones",
-) -> dict[str, Assignment]:
-    """The table for each machine: ``choices`` ("TABLE" or "MACHINE=TABLE", ``--zones``),
-    else ``configured`` (the benchmark config's ``zones``, MACHINE -> TABLE), else the default.
-
-    A machine with none of them (a user's dataset) gets no table and is left
-    out of the severity figures; the caller says so. A configured machine that
-    is not in ``machines`` or a table that does not resolve is one line naming
-    ``where`` (the config file) and the field.
-    """
-    chosen: dict[str, tuple[str, str]] = {}
-    for machine, table in (configured or {}).items():
-        if machine not in machines:
-            raise SDTError(
-                f"{where}: {machine}: no machine {machine!r} here; machines are "
-                f"{', '.join(machines)} (fix the name or remove the line)"
-            )
-        try:
-            resolve_table(table)
-        except SDTError as exc:
-            raise SDTError(f"{where}: {machine}: {exc}") from None
-        chosen[machine] = (table, "given in the benchmark config ([benchmark] zones)")
-    for choice in choices:
-        machine, sep, table = choice.rpartition("=")
-        if sep and machine not in machines:
-            raise SDTError(
-                f"--zones {choice!r}: no machine {machine!r} in the results; "
-                f"machines are {', '.join(machines)}"
-            )
-        for target in [machine] if sep else machines:
-            chosen[target] = (table, "given (--zones)")
-    out: dict[str, Assignment] = {}
-    for machine in machines:
-        if machine in chosen:
-            table, reason = chosen[machine]
-            out[machine] = Assignment(machine, resolve_table(table), reason)
-        elif machine in DEFAULT_TABLES:
-            name, reason = DEFAULT_TABLES[machine]
-            out[machine] = Assignment(machine, builtin_tables()[name], reason)
-    return out

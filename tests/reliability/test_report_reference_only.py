@@ -69,10 +69,13 @@ def test_alarm_thresholds_of_no_pairs_are_an_empty_float_table():
             "recording_id": pd.Series([], dtype="str"),
             "acquisition": pd.Series([], dtype="int64"),
             "window": pd.Series([], dtype="int64"),
+            "sensor": pd.Series([], dtype="str"),
             "v_ref": pd.Series([], dtype="float64"),
+            "v_sensor": pd.Series([], dtype="float64"),
             "healthy": pd.Series([], dtype="bool"),
         }
     )
     base = alarm_thresholds(pairs, {"m": Assignment("m", table, "test")})
     assert base.empty
-    assert all(base[c].dtype == np.float64 for c in ("baseline", "alarm", "trip"))
+    columns = ("baseline", "alarm", "baseline_ref", "alarm_ref", "trip")
+    assert all(base[c].dtype == np.float64 for c in columns)

@@ -52,6 +52,9 @@ def test_compare_text_names_the_zone_table(results_dir) -> None:
     assert result.exit_code == 0, result.output
     assert "ISO zones of V_RMS (10-1000 Hz) against wilcoxon-786b10" in result.stdout
     assert "Motor-2 zone table: iso20816-1-typical-low (ISO 20816-1:2016" in result.stdout
+    assert "the pump end (ch4, ch5) is graded by the same table as a proxy" in result.stdout
+    assert "alarms: criterion II (ISO 10816-3:2009 5.3, 5.4.1, 5.4.2)" in result.stdout
+    assert "ISO zone per condition" in result.stdout
 
 
 def test_report_has_the_severity_section_and_captioned_spectra(full_report) -> None:
@@ -59,11 +62,39 @@ def test_report_has_the_severity_section_and_captioned_spectra(full_report) -> N
     text = written["md"].read_text(encoding="utf-8")
     section = text[text.index("## Severity and alarms") :]
     assert "### Zone agreement" in section and "iso20816-1-typical-low" in section
-    assert "### Alarms (ISO 20816-1 criterion II)" in section
+    # criterion II's clauses are ISO 10816-3:2009's (5.3, 5.4.1, 5.4.2), not ISO 20816-1's
+    assert "### Alarms (criterion II, ISO 10816-3:2009 5.3, 5.4.1, 5.4.2)" in section
+    assert "### Zone per condition" in section
     # ch4 is in the small folder: the pump bearing's envelope (6308 lines) is drawn
     assert_real_png(folder / "figures" / f"{slug('envelope', 'Motor-2', 'bearing pump')}.png")
     caption = next(line for line in section.splitlines() if "6308 lines" in line and line[0] == "*")
-    for words in ("one-sided peak amplitude", "Hann window", "RBW", "unit g"):
+    for words in ("one-sided peak amplitude", "flat-top window", "RBW", "unit gE"):
         assert words in caption
     assert_real_png(folder / "figures" / f"{slug('velocity', 'Motor-2')}.png")
     assert_real_png(folder / "figures" / f"{slug('waterfall', 'Motor-2')}.png")
+
+
+def test_compare_json_zone_per_condition_matches_features_parquet(results_dir) -> None:
+    # issue 40, item 8: "condition X: reference zone A, ADXL345 zone B", from the windows
+    result = runner.invoke(app, ["compare", str(results_dir), "--json"])
+    assert result.exit_code == 0, result.output
+    rows = json.loads(result.stdout)["severity"]["conditions"]
+    f = pd.read_parquet(results_dir / "features.parquet")
+    for sensor in ("wilcoxon-786b10", "adxl345"):
+        mine = f[
+            (f["sensor"] == sensor) & (f["condition"] == "bearing bpfo") & (f["severity"] == 3)
+        ]
+        medians = mine.groupby("channel")["V_RMS"].median()
+        worst = medians.idxmax()
+        v = float(medians[worst])
+        zone = "ABCD"[int(np.select([v <= LOW[0], v <= LOW[1], v <= LOW[2]], [0, 1, 2], 3))]
+        (row,) = [
+            r
+            for r in rows
+            if r["sensor"] == sensor
+            and r["channel"] == "all"
+            and r["condition"] == "bearing bpfo"
+            and r["severity"] == 3
+        ]
+        assert (row["from_channel"], row["zone"]) == (worst, zone)
+        assert row["v_rms"] == pytest.approx(v)

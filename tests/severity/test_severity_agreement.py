@@ -109,25 +109,35 @@ def test_a_gain_of_two_moves_exactly_the_windows_within_a_factor_2_below_a_bound
     assert got.sum() == len(v)
 
 
-def test_alarm_thresholds_follow_criterion_ii_from_the_reference_healthy_baseline(
-    features,
-) -> None:
+def test_alarm_thresholds_follow_criterion_ii_on_each_sensors_own_baseline(features) -> None:
     result = _agreement(features)
-    ref = features[features["sensor"] == "ref"]
     for channel in ("ch1", "ch2"):
-        mine = ref[ref["channel"] == channel]
-        healthy = mine[mine["severity"].isna()]["V_RMS"].to_numpy(np.float64)
-        alarm = min(healthy.mean() + 0.25 * 2.8, 1.25 * 2.8)
+        at = features[features["channel"] == channel]
+        ref, double = at[at["sensor"] == "ref"], at[at["sensor"] == "double"]
+        healthy = ref[ref["severity"].isna()]["V_RMS"].to_numpy(np.float64)
+        own = double[double["severity"].isna()]["V_RMS"].to_numpy(np.float64)
+        alarm_ref = min(healthy.mean() + 0.25 * 2.8, 1.25 * 2.8)
+        alarm_own = min(own.mean() + 0.25 * 2.8, 1.25 * 2.8)
         row = result.alarms[
             (result.alarms["sensor"] == "double") & (result.alarms["channel"] == channel)
         ]
-        assert row["alarm"].item() == pytest.approx(alarm)
-        assert row["capped"].item() == (healthy.mean() > 2.8)  # baseline beyond B/C
+        assert row["alarm"].item() == pytest.approx(alarm_own)
+        assert row["alarm_ref"].item() == pytest.approx(alarm_ref)  # kept beside, named
+        assert row["capped"].item() == (own.mean() + 0.7 > 3.5)
         assert row["trip"].item() == pytest.approx(1.25 * 4.5)
-        fault = mine[mine["severity"].notna()]["V_RMS"].to_numpy(np.float64)
-        same = ((fault > alarm) == (2 * fault > alarm)).mean()
-        assert row["fault_alarm_same"].item() == pytest.approx(same)
-        assert row["false_alarm_sensor"].item() == pytest.approx((2 * healthy > alarm).mean())
+        # the bit: above ALARM, or a decrease of more than 0.25 x B/C below the baseline
+        fault_ref = ref[ref["severity"].notna()]["V_RMS"].to_numpy(np.float64)
+        fault_own = double[double["severity"].notna()]["V_RMS"].to_numpy(np.float64)
+        bit_ref = (fault_ref > alarm_ref) | (fault_ref < healthy.mean() - 0.7)
+        bit_own = (fault_own > alarm_own) | (fault_own < own.mean() - 0.7)
+        bit_refbase = (fault_own > alarm_ref) | (fault_own < healthy.mean() - 0.7)
+        assert row["fault_alarm_ref"].item() == pytest.approx(bit_ref.mean())
+        assert row["fault_alarm_same"].item() == pytest.approx((bit_ref == bit_own).mean())
+        assert row["fault_alarm_same_refbase"].item() == pytest.approx(
+            (bit_ref == bit_refbase).mean()
+        )
+        false_own = (own > alarm_own) | (own < own.mean() - 0.7)
+        assert row["false_alarm_sensor"].item() == pytest.approx(false_own.mean())
 
 
 def test_the_report_section_shows_the_table_used_and_the_agreement(features, tmp_path) -> None:

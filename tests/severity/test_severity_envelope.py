@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy import signal
 
 from sdt_framework.api import degrade
 from sdt_framework.data import open_synthetic
@@ -48,7 +49,9 @@ def test_strongest_envelope_line_is_the_6309_bpfo_within_one_bin(
     strongest = env.freq[shown][np.argmax(env.values[shown])]
     assert abs(strongest - BPFO_6309) <= env.bin_hz
     assert env.bin_hz == pytest.approx(0.25)  # 4 s: the caption's line spacing
-    assert env.rbw_hz == pytest.approx(1.5 * 0.25)  # Hann ENBW
+    window = signal.windows.flattop(y.size, sym=False)
+    enbw = y.size * np.sum(window**2) / np.sum(window) ** 2  # 3.77 lines: the flat-top's
+    assert env.rbw_hz == pytest.approx(enbw * 0.25)
 
 
 def test_running_speed_read_off_the_spectrum_is_the_nominal_one(outer_race_fault) -> None:

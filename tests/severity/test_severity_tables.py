@@ -83,3 +83,29 @@ def test_an_unknown_table_name_lists_the_shipped_ones(sdt_main, tmp_path: Path) 
     code, _, err = sdt_main("compare", str(tmp_path), "--zones", "Motor-4=iso-nothing")
     assert code == 2
     assert "unknown zone table 'iso-nothing'" in err and "iso10816-3-group2-rigid" in err
+
+
+def test_the_pump_end_is_named_a_proxy_and_no_unsourced_20816_3_claim_is_made() -> None:
+    # issue 40, item 5: pumps are ISO 10816-7's subject, whose figures no source read here
+    # gives; the shipped tables do not claim ISO 20816-3:2022 carries the same boundaries
+    from sdt_framework.severity import assign_tables
+
+    for machine, assignment in assign_tables(["Motor-2", "Motor-4"]).items():
+        assert "the pump end (ch4, ch5) is graded by the same table as a proxy" in (
+            assignment.reason
+        ), machine
+        assert "ISO 10816-7" in assignment.reason
+    for table in builtin_tables().values():
+        assert "20816-3" not in table.edition and "20816-3" not in table.source
+
+
+def test_a_ball_fault_is_drawn_at_twice_the_ball_spin_frequency() -> None:
+    from sdt_framework.severity import BEARINGS, defect_lines
+
+    # 6309 as the generator builds it: 8 balls of 17.46 mm on a 72.5 mm pitch circle
+    ratio, shaft = 17.46 / 72.5, 1480 / 60
+    bsf = 72.5 / (2 * 17.46) * (1 - ratio**2) * shaft
+    lines = defect_lines(BEARINGS["6309"], shaft)
+    assert list(lines) == ["BPFO", "BPFI", "2xBSF", "FTF"]
+    assert lines["2xBSF"] == pytest.approx(2 * bsf)
+    assert lines["BPFO"] == pytest.approx(4 * (1 - ratio) * shaft)
