@@ -43,7 +43,7 @@ from .document import Block, Figure, Heading, Paragraph, literal
 from .figures_levels import MAX_TESTS, Level, levels_figure
 from .load import ResultsFolder
 from .passband import passband
-from .resonance import ResonanceFate, excited_band, resonance_fates
+from .resonance import EnvelopeContent, envelope_content, excited_band
 from .signals import SensorTrace, degrade_all, open_config_dataset
 from .style import figure_label, new_figure, save_figure
 
@@ -93,13 +93,13 @@ def envelope_figure(
     bands: dict[str, tuple[float, float]],
     lines: dict[str, float],
     title: str,
-    fates: dict[str, ResonanceFate] | None = None,
+    fates: dict[str, EnvelopeContent] | None = None,
 ) -> tuple[MplFigure, list[str]]:
     """One panel per sensor: envelope spectrum to 5 x BPFO with the defect lines.
 
     ``bands`` is each sensor's envelope band, ``lines`` the lines to draw (see
-    :func:`drawn_lines`); with ``fates`` each panel says where the resonance
-    lands in that chain, in red when it is aliased into the envelope band.
+    :func:`drawn_lines`); with ``fates`` each panel says what its envelope band
+    holds (:class:`.resonance.EnvelopeContent`), in red when mostly aliased content.
     """
     fig = new_figure(11, 2.3 * len(traces) + 0.6)
     top = 5 * max(lines.values()) if lines else 500.0
@@ -137,21 +137,25 @@ def envelope_figure(
 
 def envelope_notes(
     x: np.ndarray, fs: float, specs: list, traces: list[SensorTrace]
-) -> tuple[dict[str, tuple[float, float]], dict[str, ResonanceFate], str]:
-    """Each sensor's envelope band, what its chain does to the resonance, and a caption.
+) -> tuple[dict[str, tuple[float, float]], dict[str, EnvelopeContent], str]:
+    """Each sensor's envelope band, what reaches it from the recording, and a caption.
 
-    The resonance is read off the recording ``x`` at ``fs`` (:func:`.resonance.excited_band`)
-    within the band the reference's envelope uses at this rate.
+    The resonance named where nothing aliased arrives is read off the recording
+    ``x`` at ``fs`` (:func:`.resonance.excited_band`) within the band the
+    reference's envelope uses at this rate.
     """
     pairs = zip(traces, specs, strict=True)
     bands = {t.sensor: envelope_band(t.fs, chain_bandwidth(s)) for t, s in pairs}
     search = envelope_band(fs, fs / 2)
-    resonance = excited_band(x, fs, search)
-    fates = resonance_fates(specs, fs, resonance, bands)
+    try:
+        resonance = excited_band(x, fs, search)
+        fates = {s.name: envelope_content(s, x, fs, bands[s.name], resonance) for s in specs}
+    except ValueError as exc:  # a recording too short or too slow to hold the band
+        return bands, {}, f"Envelope content not located ({exc})."
     text = (
-        f"Resonance the impacts ring: {resonance[0]:.0f}-{resonance[1]:.0f} Hz (half-power "
-        f"band of the strongest peak of the recording's spectrum in "
-        f"{search[0]:.0f}-{search[1]:.0f} Hz); "
+        f"What each envelope band holds, line by line from the recording's spectrum "
+        f"through each chain's gain and folding (strongest resonance {resonance[0]:.0f}-"
+        f"{resonance[1]:.0f} Hz, in {search[0]:.0f}-{search[1]:.0f} Hz): "
         + "; ".join(f.describe() for f in fates.values())
         + "."
     )

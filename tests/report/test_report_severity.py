@@ -65,7 +65,7 @@ def test_report_has_the_severity_section_and_captioned_spectra(full_report) -> N
     caption = next(line for line in section.splitlines() if "6308 lines" in line and line[0] == "*")
     for words in ("one-sided peak amplitude", "Hann window", "RBW", "unit g", "2×BSF"):
         assert words in caption
-    assert "Resonance the impacts ring" in caption and "adxl345: the " in caption
+    assert "What each envelope band holds" in caption and "adxl345: " in caption
     assert_real_png(folder / "figures" / f"{slug('velocity', 'Motor-2')}.png")
     assert_real_png(folder / "figures" / f"{slug('levels', 'Motor-2')}.png")
     assert "ASD by fault level" in section and "severity waterfall" not in section
