@@ -31,13 +31,15 @@ FORMATS = ("md", "html")
 
 #: what each figure shows (the fixed part of its caption)
 CAPTIONS = {
-    "fig2": "Paper Fig. 2: the recording (default: highest cavitation-suction level, ch1) "
-    "through every sensor's chain. (a) ~80 ms around the reference's largest peak; dotted "
-    "lines mark ±G_max of clipped profiles. (b) Welch amplitude spectral density.",
+    "fig2": "Paper Fig. 2: the recording (default: the highest cavitation-suction level, on "
+    "the channel where it differs most from healthy) through every sensor's chain. (a) ~80 ms "
+    "around the reference's largest peak; dotted lines mark ±G_max of clipped profiles. "
+    "(b) Welch amplitude spectral density.",
     "fig3": "Paper Fig. 3: 2-D t-SNE of the standardised repetition-0 features, one panel per "
     "sensor, coloured by class; at most 1000 windows per sensor (fixed random state).",
     "fig4": "Paper Fig. 4: the chain of each noise-injecting profile on x_ref = 0 "
-    "(as `sdt validate-noise`). (a) time trace; (b) ASD with the 10–1500 Hz band and mean NSD.",
+    "(as `sdt validate-noise`). (a) time trace; (b) ASD and mean NSD, each read over "
+    "10–1500 Hz cut to the band that profile's chain passes (its lowest corner or Nyquist).",
     "fig6": "Paper Fig. 6: per class, the best F1 over classifiers (each classifier's F1 "
     "averaged over repetitions first), per sensor.",
     "fig7": "Paper Fig. 7: confusion matrices summed over repetitions and row-normalised, "

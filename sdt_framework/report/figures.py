@@ -25,7 +25,8 @@ from .figures_features import lowest_severity, plot_tsne
 from .figures_scores import plot_confusions, plot_radar, worst_cells
 from .figures_signal import plot_noise, plot_sdt_overlay
 from .load import ResultsFolder
-from .signals import degrade_all, noise_checks, open_config_dataset, pick_recording
+from .pick import pick_recording
+from .signals import degrade_all, noise_checks, open_config_dataset
 from .style import save_figure
 
 __all__ = ["FIGURES", "draw_figures"]
@@ -62,17 +63,19 @@ Draw = Callable[..., tuple[MplFigure, str]]
 def _fig2(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple[Draw, tuple]:
     if folder.config is None:
         raise MissingInputError("config.toml is missing or invalid: cannot re-open the dataset")
-    recording = pick_recording(open_config_dataset(folder.config, registry))
-    return _draw_fig2, (recording, _specs(folder, registry), folder.config.seed, colors)
+    recordings = open_config_dataset(folder.config, registry)
+    choice = pick_recording(recordings, folder.features, folder.reference)
+    return _draw_fig2, (choice, _specs(folder, registry), folder.config.seed, colors)
 
 
 def _draw_fig2(
-    recording: Any, specs: list[SensorSpec], seed: int, colors: dict[str, str]
+    choice: Any, specs: list[SensorSpec], seed: int, colors: dict[str, str]
 ) -> tuple[MplFigure, str]:
+    recording = choice.recording
     _, traces = degrade_all(recording, specs, seed)
     name = f"{recording.machine} / {recording.run} / {recording.channel}"
     fig = plot_sdt_overlay(traces, colors, title=f"{name}, first acquisition")
-    return fig, f"{literal(name)}, acquisition 0, seed {seed}."
+    return fig, f"{literal(name)}, acquisition 0, seed {seed}. Channel {literal(choice.reason)}."
 
 
 def _fig3(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple[Draw, tuple]:
@@ -97,13 +100,9 @@ def _fig4(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple
 
 
 def _draw_fig4(specs: list[SensorSpec], seed: int, colors: dict[str, str]) -> tuple[MplFigure, str]:
-    checks = noise_checks(specs, seed)
-    stats = ", ".join(
-        f"{literal(c.sensor)}: RMS {c.sdt.rms_mg.mean():.2f} mg, "
-        f"NSD {c.sdt.nsd_ug_rthz.mean():.1f} µg/√Hz"
-        for c in checks
-    )
-    return plot_noise(checks, colors), f"8 windows of 2048 samples. {stats}."
+    noise = noise_checks(specs, seed)
+    stats = "; ".join(literal(n.caption()) for n in noise)
+    return plot_noise(noise, colors), f"8 windows of 2048 samples. {stats}."
 
 
 def _fig6(folder: ResultsFolder, registry: Any, colors: dict[str, str]) -> tuple[Draw, tuple]:

@@ -1,9 +1,10 @@
 """Signal figures: the SDT on one recording (paper Fig. 2) and zero-motion noise (Fig. 4).
 
 Both draw data prepared by :mod:`.signals`; the noise figure reuses the
-statistics of :class:`sdt_framework.chain.NoiseCheck` (the same Welch settings
-as ``sdt validate-noise --plot``) but puts every noisy profile in one figure
-with the report's sensor colours.
+zero-motion check of :class:`sdt_framework.validation.NoiseCheck` (the same
+Welch settings as ``sdt validate-noise --plot``) but puts every noisy profile
+in one figure with the report's sensor colours, and reads each NSD over the
+band that profile's chain passes, not over a fixed 10-1500 Hz.
 """
 
 from __future__ import annotations
@@ -14,9 +15,8 @@ import numpy as np
 from matplotlib.figure import Figure
 from scipy import signal
 
-from ..validation import NoiseCheck
 from ..validation.noise_plot import draw_noise
-from .signals import SensorTrace
+from .signals import BandNoise, SensorTrace
 from .style import LINESTYLES, figure_label, new_figure
 
 __all__ = ["plot_noise", "plot_sdt_overlay"]
@@ -106,29 +106,32 @@ def plot_sdt_overlay(
     return fig
 
 
-def plot_noise(checks: Sequence[NoiseCheck], colors: dict[str, str]) -> Figure:
+def plot_noise(noise: Sequence[BandNoise], colors: dict[str, str]) -> Figure:
     """(a) First 50 ms of each profile's zero-motion output, mg; (b) its ASD, µg/√Hz.
 
     Every noisy profile in one figure with the report's sensor colours, drawn by
-    :func:`sdt_framework.validation.noise_plot.draw_noise` exactly as
-    ``sdt validate-noise --plot`` draws one.
+    :func:`sdt_framework.validation.noise_plot.draw_noise` as ``sdt
+    validate-noise --plot`` draws one, except that each mean NSD is read, and
+    dashed, over the band that profile's chain passes (:class:`.signals.BandNoise`).
     """
     fig = new_figure(12, 4.4)
     ax_t, ax_f = fig.subplots(1, 2)
+    checks = [n.check for n in noise]
     series = [
         (
-            c.sensor,
-            c.sdt_signal,
-            c.sdt_fs,
-            c.sdt,
-            colors.get(c.sensor),
+            n.check.sensor,
+            n.check.sdt_signal,
+            n.check.sdt_fs,
+            n.stats,
+            colors.get(n.check.sensor),
             LINESTYLES[i % len(LINESTYLES)],
         )
-        for i, c in enumerate(checks)
+        for i, n in enumerate(noise)
     ]
     if len({(c.window_length, c.n_windows) for c in checks}) > 1:
         raise ValueError("noise checks with different windowing cannot share one figure")
     if checks:
-        draw_noise(ax_t, ax_f, series, checks[0])
+        draw_noise(ax_t, ax_f, series, checks[0], bands=[n.band_hz for n in noise])
     ax_t.set_title("(a) zero-motion noise (SDT, x_ref = 0)")
+    ax_f.set_title("(b) ASD; each NSD dashed over the band its chain passes")
     return fig

@@ -1,7 +1,8 @@
 """Signals for the signal figures: one recording through every sensor, and zero-motion noise.
 
 Fig. 2 needs a recording of the benchmark's own dataset, re-opened from the
-configuration exactly as ``sdt benchmark`` opened it, degraded by each sensor.
+configuration exactly as ``sdt benchmark`` opened it (which one: :mod:`.pick`),
+degraded by each sensor.
 Fig. 4 needs the zero-motion chain output of each sensor that injects noise,
 which :func:`sdt_framework.validation.noise_check` already computes.
 """
@@ -18,11 +19,18 @@ from ..bench.config import BenchmarkConfig
 from ..chain import degrade
 from ..data.open import open_dataset
 from ..data.recording import Recording
-from ..errors import SDTError
 from ..specs import SensorSpec
 from ..validation import NoiseCheck, noise_check
+from ..validation.noise_check import BAND_HZ, WindowStats, window_stats
+from .passband import passband
 
-__all__ = ["SensorTrace", "degrade_all", "noise_checks", "open_config_dataset", "pick_recording"]
+__all__ = [
+    "BandNoise",
+    "SensorTrace",
+    "degrade_all",
+    "noise_checks",
+    "open_config_dataset",
+]
 
 
 @dataclass(frozen=True)
@@ -56,35 +64,6 @@ def open_config_dataset(config: BenchmarkConfig, registry: Any) -> list[Recordin
     return recordings
 
 
-def pick_recording(recordings: list[Recording]) -> Recording:
-    """The recording for Fig. 2, as in the paper when possible.
-
-    Preference: the highest severity of "cavitation suction" (the paper's
-    Motor-4 cavitation suction 4), else of any condition containing
-    "cavitation", else of any fault; on channel ch1 when present, else the
-    first channel. Falls back to the first recording.
-    """
-    if not recordings:
-        raise SDTError("the dataset has no recordings to draw")
-
-    def best(pool: list[Recording]) -> Recording | None:
-        if not pool:
-            return None
-        channel = "ch1" if any(r.channel == "ch1" for r in pool) else min(r.channel for r in pool)
-        pool = [r for r in pool if r.channel == channel]
-        return max(pool, key=lambda r: (r.severity or 0, r.machine, r.run))
-
-    for test in (
-        lambda r: r.condition == "cavitation suction",
-        lambda r: "cavitation" in r.condition,
-        lambda r: r.severity is not None,
-    ):
-        chosen = best([r for r in recordings if test(r)])
-        if chosen is not None:
-            return chosen
-    return recordings[0]
-
-
 def degrade_all(
     recording: Recording, sensors: list[SensorSpec], seed: int = 0
 ) -> tuple[NDArray[np.float64], list[SensorTrace]]:
@@ -101,6 +80,48 @@ def degrade_all(
     return x, traces
 
 
-def noise_checks(sensors: list[SensorSpec], seed: int = 0) -> list[NoiseCheck]:
-    """Zero-motion checks (8 windows of 2048 samples) of every sensor that injects noise."""
-    return [noise_check(spec, seed=seed) for spec in sensors if spec.inject_noise]
+@dataclass(frozen=True)
+class BandNoise:
+    """A zero-motion check with its NSD read over the band the sensor's chain passes.
+
+    ``band_hz`` is the check's 10-1500 Hz band cut to the chain's bandwidth
+    (:func:`~.passband.passband`), ``note`` says so when it was cut, and
+    ``configured`` is the profile's noise density (µg/√Hz) to read it against.
+    """
+
+    check: NoiseCheck
+    band_hz: tuple[float, float]
+    stats: WindowStats
+    note: str
+    configured: float
+
+    def caption(self) -> str:
+        """``sensor: RMS .. mg, NSD .. µg/√Hz over lo-hi Hz (configured ..; note)``."""
+        band = f"{self.band_hz[0]:g}-{self.band_hz[1]:.0f} Hz"
+        extra = "; ".join(t for t in (f"configured {self.configured:g}", self.note) if t)
+        return (
+            f"{self.check.sensor}: RMS {self.stats.rms_mg.mean():.2f} mg, "
+            f"NSD {self.stats.nsd_ug_rthz.mean():.1f} µg/√Hz over {band} ({extra})"
+        )
+
+
+def noise_checks(sensors: list[SensorSpec], seed: int = 0) -> list[BandNoise]:
+    """Zero-motion checks (8 windows of 2048 samples) of every sensor that injects noise.
+
+    Each NSD is the mean density over 10-1500 Hz cut to what that sensor's
+    chain passes: above its bandwidth the output is the filter's skirt (or the
+    quantiser's floor), not the part's noise.
+    """
+    out = []
+    for spec in sensors:
+        if not spec.inject_noise:
+            continue
+        check = noise_check(spec, seed=seed)
+        limit = passband(spec, check.fs_ref)
+        band = limit.clip(BAND_HZ) or BAND_HZ
+        stats = window_stats(
+            check.sdt_signal, check.sdt_fs, check.n_windows, check.window_length, band
+        )
+        configured = float(spec.noise_density_ug_rthz)
+        out.append(BandNoise(check, band, stats, limit.note(BAND_HZ), configured))
+    return out

@@ -79,16 +79,20 @@ class WindowStats:
 
 
 def window_stats(
-    x: NDArray[np.float64], fs: float, n_windows: int = 8, window_length: int = 2048
+    x: NDArray[np.float64],
+    fs: float,
+    n_windows: int = 8,
+    window_length: int = 2048,
+    band_hz: tuple[float, float] = BAND_HZ,
 ) -> WindowStats:
-    """Noise RMS and NSD of the first ``n_windows`` windows of ``x`` (in g) at ``fs``."""
+    """Noise RMS and NSD (over ``band_hz``) of the first ``n_windows`` windows of ``x`` (g)."""
     windows = np.asarray(x[: n_windows * window_length], dtype=np.float64).reshape(
         n_windows, window_length
     )
     centred = windows - windows.mean(axis=1, keepdims=True)
     rms_mg = np.sqrt(np.mean(centred**2, axis=1)) * 1e3
     freqs, psd = signal.welch(windows, fs=fs, nperseg=window_length, axis=-1)
-    band = (freqs >= BAND_HZ[0]) & (freqs <= BAND_HZ[1])
+    band = (freqs >= band_hz[0]) & (freqs <= band_hz[1])
     nsd = np.sqrt(psd[:, band].mean(axis=1)) * 1e6
     return WindowStats(rms_mg=rms_mg, nsd_ug_rthz=nsd)
 

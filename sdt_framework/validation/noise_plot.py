@@ -42,17 +42,25 @@ def plot_formats() -> tuple[str, ...]:
 NoiseSeries = tuple[str, np.ndarray, float, WindowStats, str | None, str]
 
 
-def draw_noise(ax_t: Any, ax_f: Any, series: Sequence[NoiseSeries], check: NoiseCheck) -> None:
+def draw_noise(
+    ax_t: Any,
+    ax_f: Any,
+    series: Sequence[NoiseSeries],
+    check: NoiseCheck,
+    bands: Sequence[tuple[float, float]] | None = None,
+) -> None:
     """Draw zero-motion noise on two axes: (a) time trace in mg, (b) ASD in ug/sqrt(Hz).
 
     Shared by ``sdt validate-noise --plot`` and the report's Fig. 4, so both show
     the statistics the same way: the first ``check.window_length`` samples
     (mean removed, at most 50 ms), the Welch ASD with ``nperseg = window_length``
     over the ``check.n_windows`` windows, the 10..1500 Hz NSD band shaded and
-    each mean NSD dashed.
+    each mean NSD dashed. With ``bands`` (one per series, the band its NSD was
+    measured over) each mean NSD is dashed over its own band only and no band
+    is shaded: the report's Fig. 4 clips each band to what the chain passes.
     """
     n = check.window_length
-    for label, x, fs, stats, colour, style in series:
+    for i, (label, x, fs, stats, colour, style) in enumerate(series):
         window = x[:n] - np.mean(x[:n])
         t_ms = np.arange(n) / fs * 1e3
         shown = t_ms <= 50.0
@@ -67,15 +75,20 @@ def draw_noise(ax_t: Any, ax_f: Any, series: Sequence[NoiseSeries], check: Noise
         )
         freqs, psd = signal.welch(x[: check.n_windows * n], fs=fs, nperseg=n)
         nsd = stats.nsd_ug_rthz.mean()
+        own = f" over {bands[i][0]:g}–{bands[i][1]:.0f} Hz" if bands is not None else ""
         ax_f.loglog(
             freqs[1:],
             np.sqrt(psd[1:]) * 1e6,
             lw=0.8,
             color=colour,
-            label=f"{label}: NSD {nsd:.1f} µg/√Hz",
+            label=f"{label}: NSD {nsd:.1f} µg/√Hz{own}",
         )
-        ax_f.axhline(nsd, color=colour, ls="--", lw=0.8)
-    ax_f.axvspan(*BAND_HZ, color="0.92", zorder=0, label="NSD band 10–1500 Hz")
+        if bands is None:
+            ax_f.axhline(nsd, color=colour, ls="--", lw=0.8)
+        else:
+            ax_f.hlines(nsd, *bands[i], color=colour, ls="--", lw=1.2)
+    if bands is None:
+        ax_f.axvspan(*BAND_HZ, color="0.92", zorder=0, label="NSD band 10–1500 Hz")
     ax_t.set(xlabel="time, ms", ylabel="acceleration, mg")
     ax_f.set(xlabel="frequency, Hz", ylabel="ASD, µg/√Hz", title="(b) amplitude spectral density")
     for ax, where in ((ax_t, "upper right"), (ax_f, "lower left")):

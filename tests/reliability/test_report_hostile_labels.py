@@ -132,7 +132,7 @@ def test_benchmark_and_report_on_hostile_labels_write_only_inside_out(sdt, tmp_p
     assert not outside, outside  # on main: PWNED...png four folders up
     figures = sorted(p.name for p in (out / "figures").iterdir())
     assert all(re.fullmatch(r"[A-Za-z0-9_.-]+\.png", name) for name in figures), figures
-    assert sum(name.startswith(("velocity_x-PWNED-", "waterfall_x-PWNED-")) for name in figures)
+    assert sum(name.startswith(("velocity_x-PWNED-", "levels_x-PWNED-")) for name in figures)
     assert "velocity" in (out / "report.md").read_text(encoding="utf-8")  # drawn, linked
     _check_report(out, done.stdout, done.stderr)
 

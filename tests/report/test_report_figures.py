@@ -14,9 +14,8 @@ from sdt_framework.report.figures_scores import (
     worst_cells,
 )
 from sdt_framework.report.figures_signal import plot_noise, plot_sdt_overlay
-from sdt_framework.report.signals import SensorTrace
+from sdt_framework.report.signals import SensorTrace, noise_checks
 from sdt_framework.report.style import REFERENCE_COLOR, save_figure, sensor_colors
-from sdt_framework.validation import noise_check
 
 from .conftest import assert_real_png
 
@@ -153,8 +152,10 @@ def test_overlay_marks_full_scale_of_clipped_profiles_only(tmp_path):
 
 
 def test_noise_figure_from_noise_check(registry, tmp_path):
-    checks = [noise_check(registry.sensor(name), seed=0) for name in ("adxl345", "adxl357")]
-    fig = plot_noise(checks, sensor_colors(["adxl345", "adxl357"], None))
+    noise = noise_checks([registry.sensor(name) for name in ("adxl345", "adxl357")], seed=0)
+    fig = plot_noise(noise, sensor_colors(["adxl345", "adxl357"], None))
     labels = fig.axes[1].get_legend_handles_labels()[1]
     assert any(label.startswith("adxl345: NSD 2") for label in labels)  # ~290 µg/√Hz
+    # the ADXL357's NSD is read under its 1000 Hz digital low-pass: near its configured 90
+    assert any(label.startswith("adxl357: NSD 8") and "10–1000 Hz" in label for label in labels)
     assert_real_png(save_figure(fig, tmp_path, "noise.png"))

@@ -68,10 +68,12 @@ def test_report_has_the_severity_section_and_captioned_spectra(full_report) -> N
     # ch4 is in the small folder: the pump bearing's envelope (6308 lines) is drawn
     assert_real_png(folder / "figures" / f"{slug('envelope', 'Motor-2', 'bearing pump')}.png")
     caption = next(line for line in section.splitlines() if "6308 lines" in line and line[0] == "*")
-    for words in ("one-sided peak amplitude", "flat-top window", "RBW", "unit gE"):
+    for words in ("one-sided peak amplitude", "flat-top window", "RBW", "unit gE", "2×BSF"):
         assert words in caption
+    assert "What each envelope band holds" in caption and "adxl345: " in caption
     assert_real_png(folder / "figures" / f"{slug('velocity', 'Motor-2')}.png")
-    assert_real_png(folder / "figures" / f"{slug('waterfall', 'Motor-2')}.png")
+    assert_real_png(folder / "figures" / f"{slug('levels', 'Motor-2')}.png")
+    assert "ASD by fault level" in section and "severity waterfall" not in section
 
 
 def test_compare_json_zone_per_condition_matches_features_parquet(results_dir) -> None:
