@@ -33,7 +33,7 @@ from ..labels import slug
 from ..severity import (
     BEARINGS,
     chain_bandwidth,
-    defect_frequencies,
+    defect_lines,
     envelope_band,
     envelope_spectrum,
     running_speed,
@@ -50,7 +50,6 @@ from .style import figure_label, new_figure, save_figure
 __all__ = [
     "BEARING_RUNS",
     "VELOCITY_BAND_HZ",
-    "drawn_lines",
     "envelope_figure",
     "envelope_notes",
     "spectral_blocks",
@@ -64,23 +63,6 @@ BEARING_RUNS = {
 }
 _LINE_STYLES = {"BPFO": "-", "BPFI": "--", "2×BSF": ":", "FTF": "-."}
 VELOCITY_BAND_HZ = (10.0, 1000.0)
-
-
-def drawn_lines(lines: dict[str, float]) -> dict[str, float]:
-    """The defect lines an envelope shows: BPFO, BPFI and FTF as computed, BSF doubled.
-
-    A defect on a ball meets the inner and the outer race once each per spin
-    revolution, so its impacts repeat at 2 x BSF, where the envelope line of a
-    ball fault lies (1 x BSF is the ball's spin, not its impact rate). Source:
-    the Case Western Reserve University Bearing Data Center's table for its
-    drive-end 6205-2RS JEM SKF gives the defect frequencies as multiples of
-    running speed: inner ring 5.4152, outer ring 3.5848, cage 0.39828, rolling
-    element 4.7135. Its own BPFI and BPFO give n = 9 balls and d/D = 0.20338,
-    so BSF = D/2d (1 - (d/D)^2) = 2.3568 and the rolling-element entry is
-    2.000 x BSF (the table read through public repository copies of it;
-    tests/report/test_report_envelope_resonance.py recomputes it).
-    """
-    return {("2×BSF" if k == "BSF" else k): (2 * v if k == "BSF" else v) for k, v in lines.items()}
 
 
 def _panels(fig: MplFigure, count: int) -> list:
@@ -98,8 +80,9 @@ def envelope_figure(
     """One panel per sensor: envelope spectrum to 5 x BPFO with the defect lines.
 
     ``bands`` is each sensor's envelope band, ``lines`` the lines to draw (see
-    :func:`drawn_lines`); with ``fates`` each panel says what its envelope band
-    holds (:class:`.resonance.EnvelopeContent`), in red when mostly aliased content.
+    :func:`~sdt_framework.severity.defect_lines`); with ``fates`` each panel says what
+    its envelope band holds (:class:`.resonance.EnvelopeContent`), in red when mostly
+    aliased content.
     """
     fig = new_figure(11, 2.3 * len(traces) + 0.6)
     top = 5 * max(lines.values()) if lines else 500.0
@@ -126,7 +109,7 @@ def envelope_figure(
                 color="tab:red" if fate.aliased_into_envelope else "0.3",
                 bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 1.5},
             )
-        ax.set_ylabel("envelope (g)")
+        ax.set_ylabel(f"envelope ({spec.unit})")
         notes.append(f"{trace.sensor}: {spec.caption()}")
     ax.set_xlabel("frequency (Hz)")
     if lines:
@@ -173,7 +156,7 @@ def _envelope_blocks(mine: list, machine: str, specs: list, seed: int, figures_d
         rec = max(runs, key=lambda r: r.severity or 0)
         x, traces = degrade_all(rec, specs, seed)
         shaft = running_speed(x, rec.sampling_rate_hz, nominal)
-        lines = drawn_lines(defect_frequencies(BEARINGS[bearing], shaft))
+        lines = defect_lines(BEARINGS[bearing], shaft)
         title = (
             f"{machine} {rec.run} {channel}: envelope spectrum, {bearing} lines at "
             f"{shaft * 60:.0f} rpm"
@@ -203,7 +186,7 @@ def _velocity_figure(traces: list[SensorTrace], specs: dict, fs: float, colors, 
             notes.append(f"{trace.sensor}: not drawn, {limit.note(VELOCITY_BAND_HZ)}")
             continue
         spec = velocity_spectrum(trace.signal, trace.fs, band)
-        overall = float(np.sqrt(np.sum(spec.values**2)))
+        overall = spec.overall  # the band's V_RMS: lines' power over the window's ENBW
         cut = f", {band[0]:g}-{band[1]:.0f} Hz" if band != VELOCITY_BAND_HZ else ""
         ax.plot(
             spec.freq,

@@ -40,18 +40,25 @@ def defect_frequencies(bearing: Bearing, shaft_hz: float) -> dict[str, float]:
 
 def defect_lines(bearing: Bearing, shaft_hz: float) -> dict[str, float]:
     """The lines an envelope spectrum shows a fault of each part at, in Hz: BPFO, BPFI,
-    2xBSF and FTF.
+    2×BSF and FTF.
 
     A defect on a ball strikes the inner and the outer race in turn, once each per
-    spin revolution, so its envelope shows 2 x BSF most clearly, not BSF (vibromera.eu
-    glossary "BSF"; bacdanvongbi.com "BSF": "2xBSF is the most prominent, because the
-    rolling element contacts both rings once per revolution"). The other three are
-    :func:`defect_frequencies`' lines.
+    spin revolution, so its envelope shows 2 x BSF most clearly, not BSF (1 x BSF is
+    the ball's spin, not its impact rate). Sources: the Case Western Reserve
+    University Bearing Data Center's table for its drive-end 6205-2RS JEM SKF gives
+    the defect frequencies as multiples of running speed: inner ring 5.4152, outer
+    ring 3.5848, cage 0.39828, rolling element 4.7135; its own BPFI and BPFO give
+    n = 9 balls and d/D = 0.20338, so BSF = D/2d (1 - (d/D)^2) = 2.3568 and the
+    rolling-element entry is 2.000 x BSF (the table read through public repository
+    copies of it; tests/report/test_report_envelope_resonance.py recomputes it);
+    vibromera.eu glossary "BSF"; bacdanvongbi.com "BSF": "2xBSF is the most
+    prominent, because the rolling element contacts both rings once per
+    revolution". The other three are :func:`defect_frequencies`' lines.
     """
     lines = defect_frequencies(bearing, shaft_hz)
     return {
         "BPFO": lines["BPFO"],
         "BPFI": lines["BPFI"],
-        "2xBSF": 2 * lines["BSF"],
+        "2×BSF": 2 * lines["BSF"],
         "FTF": lines["FTF"],
     }

@@ -106,6 +106,6 @@ def test_a_ball_fault_is_drawn_at_twice_the_ball_spin_frequency() -> None:
     ratio, shaft = 17.46 / 72.5, 1480 / 60
     bsf = 72.5 / (2 * 17.46) * (1 - ratio**2) * shaft
     lines = defect_lines(BEARINGS["6309"], shaft)
-    assert list(lines) == ["BPFO", "BPFI", "2xBSF", "FTF"]
-    assert lines["2xBSF"] == pytest.approx(2 * bsf)
+    assert list(lines) == ["BPFO", "BPFI", "2×BSF", "FTF"]
+    assert lines["2×BSF"] == pytest.approx(2 * bsf)
     assert lines["BPFO"] == pytest.approx(4 * (1 - ratio) * shaft)
