@@ -85,7 +85,11 @@ def matlab_signal(
 
 def typed(info: SignalInfo) -> SignalInfo:
     """``info`` when it is numbers; else its fault, raised as a :class:`SignalTypeError`: the
-    file was read and is not samples, so a run stops (as for a bool ``.npy``)."""
+    file was read and is not samples, so a run stops (as for a bool ``.npy``). An empty array
+    holds no samples, which is a :class:`DataFileError` (its manifest row is skipped), as for
+    any reader's empty signal."""
+    if info.fault and (info.n_samples == 0 or info.n_acquisitions == 0):
+        raise DataFileError(info.fault)
     if info.fault:
         raise SignalTypeError(info.fault)
     return info

@@ -103,7 +103,10 @@ def _info(path: Path):
         if rate is not None and _rate(path, rate)[1]:
             raise DataFileError(str(_rate(path, rate)[1])) from None
         reason = brief(RuntimeError(getattr(exc, "error_string", "") or exc))
-        raise DataFileError(f"{path}: not a readable WAV file (libsndfile: {reason})") from None
+        raise DataFileError(
+            f"{path}: not a readable WAV file (libsndfile: {reason}); sdt reads integer PCM of "
+            f"8 to 32 bits and 32/64-bit float (RIFF, RIFX or RF64)"
+        ) from None
     if info.subtype not in CONTAINER_BITS:
         raise DataFileError(
             f"{path}: its samples are {info.subtype_info} ({info.subtype}), a compressed or "

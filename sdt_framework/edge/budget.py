@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass
+from numbers import Integral
 
 from ..errors import SDTError, shown
 from ..specs import FeatureSetSpec
@@ -42,7 +43,7 @@ def report_bytes(feature_set: FeatureSetSpec, axes: int = 1, dtype: str | None =
 
     ``dtype`` ("float16"/"float32") overrides the feature set's declared dtype.
     """
-    if not (isinstance(axes, int) and axes >= 1):
+    if not (isinstance(axes, Integral) and axes >= 1):
         raise SDTError(f"axes must be a whole number >= 1, got {shown(axes)}")
     spec = feature_set if dtype is None else feature_set.with_dtype(dtype)
     return spec.bytes_per_window * axes

@@ -21,6 +21,7 @@ then (SF11 and SF12 at 125 kHz).
 from __future__ import annotations
 
 import math
+from numbers import Integral
 
 from ..errors import SDTError, shown
 
@@ -39,7 +40,7 @@ MAX_PAYLOAD_BYTES = 255
 
 
 def _check(sf: int, bandwidth_hz: float, coding_rate: int) -> None:
-    if not (isinstance(sf, int) and 6 <= sf <= 12):
+    if not (isinstance(sf, Integral) and 6 <= sf <= 12):
         raise SDTError(f"spreading factor must be an integer 6..12, got {shown(sf)}")
     if not (math.isfinite(bandwidth_hz) and bandwidth_hz > 0):
         raise SDTError(f"bandwidth must be a positive number of Hz, got {shown(bandwidth_hz)}")
@@ -84,7 +85,7 @@ def payload_symbols(
         LowDataRateOptimize; None switches it on when T_sym > 16 ms.
     """
     _check(sf, bandwidth_hz, coding_rate)
-    if not (isinstance(payload_bytes, int) and 0 <= payload_bytes <= MAX_PAYLOAD_BYTES):
+    if not (isinstance(payload_bytes, Integral) and 0 <= payload_bytes <= MAX_PAYLOAD_BYTES):
         raise SDTError(
             f"LoRa payload must be 0..{MAX_PAYLOAD_BYTES} bytes, got {shown(payload_bytes)}; "
             f"split the data over several messages"
@@ -120,7 +121,7 @@ def time_on_air_s(
     >>> round(time_on_air_s(23, 7, 125e3) * 1e3, 3)
     61.696
     """
-    if not (isinstance(preamble_symbols, int) and preamble_symbols >= 0):
+    if not (isinstance(preamble_symbols, Integral) and preamble_symbols >= 0):
         raise SDTError(
             f"preamble length must be a whole number >= 0, got {shown(preamble_symbols)}"
         )

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass, field
+from numbers import Integral
 
 from ..errors import SDTError, shown
 from ..specs import FeatureSetSpec, SensorSpec
@@ -80,7 +81,7 @@ class NodeSettings:
             if value is not None and not (math.isfinite(value) and value >= 0):
                 unit = "s" if name.endswith("_s") else "A"
                 raise SDTError(f"{name} must be >= 0 {unit}, got {shown(value)}")
-        if not (isinstance(self.rx_symbols, int) and self.rx_symbols >= 0):
+        if not (isinstance(self.rx_symbols, Integral) and self.rx_symbols >= 0):
             raise SDTError(
                 f"receive window must be a whole number of symbols, got {shown(self.rx_symbols)}"
             )
