@@ -80,7 +80,8 @@ def _whole(path: Path) -> None:
 def _header_rate(path: Path) -> int | None:
     """The ``fmt`` chunk's sample rate, found by walking the chunks (only to say why
     libsndfile refused a header: it names no field)."""
-    raw = path.read_bytes()[:65_536]
+    with open(path, "rb") as handle:
+        raw = handle.read(65_536)
     order = _SIGNATURES.get(raw[:4], "little")
     pos = 12
     while pos + 16 <= len(raw):
