@@ -17,7 +17,7 @@ from typing import TypeVar
 import numpy as np
 
 from .dtypes import describe_dtype, is_real
-from .errors import ArgumentTypeError, ArgumentValueError, one_line
+from .errors import ArgumentTypeError, ArgumentValueError, one_line, shown
 from .specs import Spec
 
 __all__ = [
@@ -33,7 +33,7 @@ S = TypeVar("S", bound=Spec)
 
 
 def _shown(value: object) -> str:
-    return one_line(repr(value), 40)
+    return one_line(shown(value), 40)
 
 
 def check_spec(kind: type[S], value: object, argument: str) -> S:

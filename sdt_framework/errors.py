@@ -33,6 +33,7 @@ __all__ = [
     "UserInterruptError",
     "field_errors",
     "one_line",
+    "shown",
     "validation_summary",
 ]
 
@@ -148,6 +149,24 @@ def one_line(text: object, limit: int = 300) -> str:
     """``text`` on one line (whitespace runs made one space), at most ``limit`` characters."""
     flat = " ".join(str(text).split())
     return flat if len(flat) <= limit else flat[: limit - 3] + "..."
+
+
+def shown(value: object) -> str:
+    """``repr`` of a value for a message, a NumPy scalar as the Python number it holds.
+
+    NumPy 2 writes a scalar's repr as its constructor (``np.float64(nan)``,
+    ``np.int64(5)``), which a message read by a person should not show: a value
+    read from a file or passed through the Python API is often one. Every message
+    that quotes a value goes through here (re-exported for the readers by
+    :mod:`sdt_framework.data.tokens`).
+
+    >>> import numpy as np
+    >>> shown(np.float64("nan")), shown(np.int64(5)), shown(0.1), shown("abc")
+    ('nan', '5', '0.1', "'abc'")
+    """
+    if type(value).__module__ == "numpy" and getattr(value, "ndim", None) == 0:
+        value = value.item()  # type: ignore[attr-defined]
+    return repr(value)
 
 
 #: how pydantic tags the branch of a union in an error's location ('constrained-float',

@@ -13,6 +13,9 @@ be three axes.
 
 from __future__ import annotations
 
+import math
+from collections import Counter
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -30,55 +33,110 @@ NUMERIC = {"double", "single", "int8", "int16", "int32", "int64", "uint8", "uint
            "uint64"}  # fmt: skip
 
 
-def matlab_signal(path: Path, name: str, shape: tuple[int, ...], cls: str) -> SignalInfo:
-    """A MATLAB variable as a signal: refused (``fault``) unless numeric, noted when a matrix."""
-    n_acq, n_samples = orient(path, shape)
-    fault = note = None
+def _fault(path: Path, name: str, shape: tuple[int, ...], cls: str, why: str | None) -> str | None:
+    """Why a MATLAB variable is not a signal, or None when it is one."""
+    what = f"{path}: variable {quote(name)}"
+    size = " x ".join(f"{n:,}" for n in shape)
+    if why == "empty" or 0 in shape:
+        return f"{what} is an empty MATLAB {cls} array ({size}): no samples"
+    if why == "complex":
+        return f"{what} is complex ({cls}); sdt reads real samples: save real(x) as a variable"
+    if why == "sparse":
+        return f"{what} is a MATLAB sparse matrix; save full(x) as a variable"
+    if why is not None and why != "class":  # a struct or cell: what it holds
+        return f"{what} is a MATLAB {cls} that {why}"
     if cls == "logical":
-        fault = (
-            f"{path}: variable {quote(name)} is a MATLAB logical array (true/false), not "
-            f"samples; save the signal as double (in g)"
+        return (
+            f"{what} is a MATLAB logical array (true/false), not samples; save the signal as "
+            f"double (in g)"
         )
-    elif cls not in NUMERIC:
-        fault = f"{path}: variable {quote(name)} is a MATLAB {cls}, not an array of numbers"
-    elif len(shape) == 2 and min(shape) > 1:
+    if cls not in NUMERIC:
+        return (
+            f"{what} is a MATLAB {cls}, not an array of numbers; sdt reads numeric arrays (in a "
+            f"v7.3 file also inside structs and cells: 's.f', 'c{{1}}')"
+        )
+    if len(shape) > 2:
+        return f"{what} is a {size} array; sdt reads 1-D and 2-D arrays: save it as a matrix"
+    return None
+
+
+def matlab_signal(
+    path: Path, name: str, shape: tuple[int, ...], cls: str, why: str | None = None
+) -> SignalInfo:
+    """A MATLAB variable as a signal: refused (``fault``) unless a numeric array of values
+    (``why`` is a reader's reason it is not: ``empty``, ``complex``, ``sparse``, or what a
+    struct or cell holds); noted when a matrix."""
+    fault = _fault(path, name, shape, cls, why)
+    if fault is not None or len(shape) not in (1, 2):
+        longest = max(shape, default=0)
+        return SignalInfo(name, 1 if not longest else math.prod(shape) // longest, longest,
+                          fault=fault)  # fmt: skip
+    n_acq, n_samples = orient(path, shape)
+    note = None
+    if len(shape) == 2 and min(shape) > 1:
         axis = "columns" if shape[0] > shape[1] else "rows"
         note = (
             f"{path}: variable {quote(name)} is a {shape[0]:,} x {shape[1]:,} matrix, read as "
             f"{n_acq} acquisitions of one signal ({n_samples:,} samples each, the longer axis "
             f"is time); if its {axis} are different axes or sensors, save each as a variable"
         )
-    return SignalInfo(name, n_acq, n_samples, note=note, fault=fault)
+    return SignalInfo(name, n_acq, n_samples, note=note)
 
 
 def typed(info: SignalInfo) -> SignalInfo:
     """``info`` when it is numbers; else its fault, raised as a :class:`SignalTypeError`: the
-    file was read and is not samples, so a run stops (as for a bool ``.npy``)."""
+    file was read and is not samples, so a run stops (as for a bool ``.npy``). An empty array
+    holds no samples, which is a :class:`DataFileError` (its manifest row is skipped), as for
+    any reader's empty signal."""
+    if info.fault and (info.n_samples == 0 or info.n_acquisitions == 0):
+        raise DataFileError(info.fault)
     if info.fault:
         raise SignalTypeError(info.fault)
     return info
 
 
-def _variables(path: Path) -> dict[str, tuple[tuple[int, ...], str]]:
+def _variables(path: Path) -> tuple[dict[str, tuple[tuple[int, ...], str]], dict[str, int]]:
+    """({name: (shape, class) of its last copy}, {name: copies} of names stored more than once)."""
     import scipy.io
 
     try:
-        return {name: (shape, cls) for name, shape, cls in scipy.io.whosmat(path)}
+        listed = scipy.io.whosmat(path)
     except OSError as exc:
         raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
     except (ValueError, NotImplementedError, TypeError) as exc:
         raise DataFileError(f"{path}: not a readable MATLAB file ({brief(exc)})") from None
+    copies = Counter(name for name, _, _ in listed)
+    return {name: (shape, cls) for name, shape, cls in listed}, {
+        name: n for name, n in copies.items() if n > 1
+    }
+
+
+def _signal(path: Path, name: str, found: dict, copies: dict[str, int]) -> SignalInfo:
+    info = matlab_signal(path, name, *found[name])
+    if name not in copies:
+        return info
+    said = (
+        f"{path}: variable {quote(name)} is stored {copies[name]} times (a writer that appends "
+        f"rather than replaces); read as its last copy, the one scipy.io.loadmat keeps"
+    )
+    return replace(info, note=said if info.note is None else f"{said}; {info.note}")
 
 
 def scan(path: Path) -> list[SignalInfo]:
-    """Every variable of 1 or 2 dimensions (headers only)."""
-    found = _variables(path)
-    return [matlab_signal(path, n, s, c) for n, (s, c) in sorted(found.items()) if len(s) in (1, 2)]
+    """Every variable (headers only), each name once; one that is not a 1-D or 2-D numeric
+    array is listed with the reason."""
+    found, copies = _variables(path)
+    return [_signal(path, name, found, copies) for name in sorted(found)]
 
 
 def probe(path: Path, variable: str | None) -> SignalInfo:
     """The named variable, or the file's only one."""
-    found = _variables(path)
+    return _probe(path, variable)[0]
+
+
+def _probe(path: Path, variable: str | None) -> tuple[SignalInfo, bool]:
+    """(the signal, whether its name is stored more than once)."""
+    found, copies = _variables(path)
     if variable is None:
         if len(found) != 1:
             raise DataFileError(
@@ -87,17 +145,31 @@ def probe(path: Path, variable: str | None) -> SignalInfo:
         variable = next(iter(found))
     if variable not in found:
         raise DataFileError(f"{path}: no variable {quote(variable)}; found {names(sorted(found))}")
-    shape, cls = found[variable]
-    return typed(matlab_signal(path, variable, shape, cls))
+    return typed(_signal(path, variable, found, copies)), variable in copies
+
+
+def _last_copy(path: Path, name: str) -> np.ndarray:
+    """The last of several variables named ``name``: ``loadmat(variable_names=...)`` stops at
+    the first, so the file is split into its variables (``varmats_from_mat``, scipy's own
+    answer to duplicate names) and the last is read."""
+    from scipy.io.matlab import loadmat, varmats_from_mat
+
+    with open(path, "rb") as handle:
+        last = [stream for found, stream in varmats_from_mat(handle) if found == name][-1]
+    return loadmat(last)[name]
 
 
 def read(path: Path, variable: str | None) -> np.ndarray:
-    """float64 (n_acquisitions, n_samples), all finite."""
+    """float64 (n_acquisitions, n_samples), all finite; a name stored twice is its last copy."""
     import scipy.io
 
-    name = probe(path, variable).variable
+    info, copied = _probe(path, variable)
+    name = str(info.variable)
     try:
-        data = scipy.io.loadmat(path, variable_names=[name])[name]
+        if copied:
+            data = _last_copy(path, name)
+        else:
+            data = scipy.io.loadmat(path, variable_names=[name])[name]
     except OSError as exc:
         raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
     except (ValueError, NotImplementedError, TypeError) as exc:

@@ -1,11 +1,15 @@
 """MATLAB v7.3 ``.mat`` files, which are HDF5 (``scipy.io.loadmat`` refuses them), through h5py.
 
-A v7.3 file is an HDF5 file behind a 512-byte text header; each top-level
-dataset with a numeric ``MATLAB_class`` attribute is a variable. MATLAB writes
-arrays column-major, so h5py sees them transposed; the longer axis is time
-either way (:func:`~sdt_framework.data.readers.orient`); a matrix is noted (in
-MATLAB's row x column order) and a ``logical`` array refused as in :mod:`.mat`.
-Structs, cells and strings are not signals and are not listed.
+A v7.3 file is an HDF5 file behind a 512-byte text header. Every numeric
+array is a signal: a top-level variable, a struct's field (``s.f``), a cell's
+element (``c{2}``), a struct array's field (``s(3).f``), named as MATLAB
+writes the expression (:mod:`.mat73_tree`). MATLAB writes arrays column-major,
+so h5py sees them transposed; the longer axis is time either way
+(:func:`~sdt_framework.data.readers.orient`); a matrix is noted (in MATLAB's
+row x column order). A top-level variable that is not a signal is listed with
+the reason (as in :mod:`.mat`): a ``logical`` array, an empty one (MATLAB
+stores ``[]`` as its dimensions), a complex or sparse one, text, or a struct
+or cell holding no numbers (naming its fields).
 """
 
 from __future__ import annotations
@@ -17,10 +21,11 @@ import numpy as np
 from sdt_framework import hookimpl
 from sdt_framework.data.readers import SignalInfo, as_acquisitions, pick
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.tokens import brief
+from sdt_framework.data.tokens import brief, quote
 from sdt_framework.specs import ReaderSpec
 
-from .mat import HDF5_AT_512, NUMERIC, matlab_signal, typed
+from .mat import HDF5_AT_512, matlab_signal, typed
+from .mat73_tree import arrays
 
 
 def _open(path: Path):
@@ -34,27 +39,23 @@ def _open(path: Path):
         ) from None
 
 
-def _class(dataset) -> str:
-    value = dataset.attrs.get("MATLAB_class", b"")
-    return value.decode() if isinstance(value, bytes) else str(value)
+def _signals(path: Path, handle) -> dict[str, tuple[SignalInfo, object]]:
+    """{MATLAB name: (its signal, the dataset holding it)} for every array of the file."""
+    return {
+        a.name: (matlab_signal(path, a.name, a.shape, a.cls, a.why), a.dataset)
+        for a in arrays(handle)
+    }
 
 
 def scan(path: Path) -> list[SignalInfo]:
-    """Every numeric or logical variable of 1 or 2 dimensions (headers only)."""
-    import h5py
-
+    """Every variable, struct field and cell element holding numbers (headers only); a
+    top-level variable that is not a signal is listed with the reason."""
     with _open(path) as handle:
-        return [
-            matlab_signal(path, name, item.shape[::-1], _class(item))  # MATLAB order
-            for name, item in sorted(handle.items())
-            if isinstance(item, h5py.Dataset)
-            and _class(item) in NUMERIC | {"logical"}
-            and item.ndim in (1, 2)
-        ]
+        return [info for info, _ in _signals(path, handle).values()]
 
 
 def probe(path: Path, variable: str | None) -> SignalInfo:
-    """The named variable, or the file's only one."""
+    """The named variable (``x``, ``s.f``, ``c{2}``, ``s(3).f``), or the file's only one."""
     infos = scan(path)
     for info in infos:
         if info.variable == variable or (variable is None and len(infos) == 1):
@@ -67,9 +68,11 @@ def read(path: Path, variable: str | None) -> np.ndarray:
     name = probe(path, variable).variable
     with _open(path) as handle:
         try:
-            data = handle[name][()]
+            data = _signals(path, handle)[str(name)][1][()]  # type: ignore[index]
         except (OSError, KeyError) as exc:
-            raise DataFileError(f"{path}: variable {name!r} unreadable ({brief(exc)})") from None
+            raise DataFileError(
+                f"{path}: variable {quote(str(name))} unreadable ({brief(exc)})"
+            ) from None
     return as_acquisitions(path, data)
 
 

@@ -29,7 +29,7 @@ import numpy as np
 
 from ..dtypes import describe_dtype, is_real
 from .recording import DataFileError, SignalTypeError
-from .tokens import quote
+from .tokens import quote, shown
 
 __all__ = [
     "HEADER_RATE_TOLERANCE",
@@ -236,6 +236,6 @@ def finite(file: Path, data: np.ndarray, unit: str = "sample", offset: int = 0) 
         acq, sample = np.argwhere(bad)[0]
         raise DataFileError(
             f"{file}: acquisition {acq}, {unit} {sample + offset}: "
-            f"non-finite value {data[acq, sample]!r}"
+            f"non-finite value {shown(data[acq, sample])}"
         )
     return data

@@ -5,12 +5,17 @@ Error messages travel far: to the terminal, to ``summary.json`` and
 at any file, including a symlink to a system file, so a message quotes at most
 a short token of a file's content (the offending cell, cut to
 :data:`TOKEN_LIMIT` characters), never a line. Library messages that may embed
-file content (pyarrow, numpy, scipy) are cut the same way.
+file content (pyarrow, numpy, scipy) are cut the same way. A value read from a
+file (a sample, a rate) is shown as a plain number, never as NumPy's
+``np.float64(nan)``: :func:`shown` (defined with the error types, below every
+layer, so that the units that may not import the data layer use the same one).
 """
 
 from __future__ import annotations
 
-__all__ = ["MESSAGE_LIMIT", "TOKEN_LIMIT", "brief", "quote"]
+from ..errors import shown
+
+__all__ = ["MESSAGE_LIMIT", "TOKEN_LIMIT", "brief", "quote", "shown"]
 
 #: characters of a file's content a message may quote: longer than any number
 #: written with 17 significant digits, shorter than a typical line of a

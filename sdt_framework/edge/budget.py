@@ -23,8 +23,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass
+from numbers import Integral
 
-from ..errors import SDTError
+from ..errors import SDTError, shown
 from ..specs import FeatureSetSpec
 from .energy import DEFAULT_RADIO, Radio, energy_per_message_j
 from .energy import radio as radio_named
@@ -42,8 +43,8 @@ def report_bytes(feature_set: FeatureSetSpec, axes: int = 1, dtype: str | None =
 
     ``dtype`` ("float16"/"float32") overrides the feature set's declared dtype.
     """
-    if not (isinstance(axes, int) and axes >= 1):
-        raise SDTError(f"axes must be a whole number >= 1, got {axes!r}")
+    if not (isinstance(axes, Integral) and axes >= 1):
+        raise SDTError(f"axes must be a whole number >= 1, got {shown(axes)}")
     spec = feature_set if dtype is None else feature_set.with_dtype(dtype)
     return spec.bytes_per_window * axes
 
@@ -164,7 +165,7 @@ def edge_budget(
         Use the repeater-compatible payload limits (the conservative table).
     """
     if not (math.isfinite(interval_s) and interval_s > 0):
-        raise SDTError(f"interval must be > 0 s, got {interval_s!r}")
+        raise SDTError(f"interval must be > 0 s, got {shown(interval_s)}")
     spec = feature_set if dtype is None else feature_set.with_dtype(dtype)
     plan = region if isinstance(region, Region) else region_named(region)
     model = radio if isinstance(radio, Radio) else radio_named(radio)

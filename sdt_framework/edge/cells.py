@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from pydantic import Field, model_validator
 
-from ..errors import SDTError, UnknownNameError
+from ..errors import SDTError, UnknownNameError, shown
 from .sourced import DataModel, Figure, read_data
 
 __all__ = ["CELLS", "HOURS_PER_YEAR", "Cell", "Life", "cell", "cell_life", "life_years"]
@@ -61,12 +61,14 @@ class Cell:
         for name in ("capacity_mah", "voltage_v", "shelf_life_years"):
             value = getattr(self, name)
             if not (isinstance(value, int | float) and math.isfinite(value) and value > 0):
-                raise SDTError(f"battery {self.name!r}: {name} must be positive, got {value!r}")
+                raise SDTError(
+                    f"battery {self.name!r}: {name} must be positive, got {shown(value)}"
+                )
         rate = self.self_discharge_per_year
         if not (isinstance(rate, int | float) and math.isfinite(rate) and 0 <= rate < 1):
             raise SDTError(
                 f"battery {self.name!r}: self-discharge must be a fraction per year in [0, 1), "
-                f"got {rate!r}"
+                f"got {shown(rate)}"
             )
         drains = [d for d, _ in self.curve]
         if self.curve and (drains != sorted(set(drains)) or min(drains) <= 0):
@@ -109,7 +111,7 @@ def _years(value: float) -> str:
 def cell_life(average_current_a: float, battery: Cell) -> Life:
     """Years until ``battery`` is empty at ``average_current_a``, capped at its shelf life."""
     if not (math.isfinite(average_current_a) and average_current_a >= 0):
-        raise SDTError(f"average current must be >= 0 A, got {average_current_a!r}")
+        raise SDTError(f"average current must be >= 0 A, got {shown(average_current_a)}")
     capacity = battery.capacity_at(average_current_a)
     per_year = average_current_a * 1e3 * HOURS_PER_YEAR / capacity + battery.self_discharge_per_year
     uncapped = math.inf if per_year == 0 else 1.0 / per_year

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 from pydantic import Field
 
-from ..errors import SDTError, UnknownNameError
+from ..errors import SDTError, UnknownNameError, shown
 from .sourced import DataModel, Figure, read_data
 
 __all__ = ["DEFAULT_RADIO", "NODE_RADIO", "RADIOS", "Radio", "energy_per_message_j", "radio"]
@@ -65,10 +65,10 @@ class Radio:
     def __post_init__(self) -> None:
         for field, value in (("tx_current_a", self.tx_current_a), ("supply_v", self.supply_v)):
             if not (math.isfinite(value) and value > 0):
-                raise SDTError(f"radio {self.name!r}: {field} must be positive, got {value!r}")
+                raise SDTError(f"radio {self.name!r}: {field} must be positive, got {shown(value)}")
         rx = self.rx_current_a
         if rx is not None and not (math.isfinite(rx) and rx >= 0):
-            raise SDTError(f"radio {self.name!r}: rx_current_a must be >= 0, got {rx!r}")
+            raise SDTError(f"radio {self.name!r}: rx_current_a must be >= 0, got {shown(rx)}")
 
     @property
     def tx_power_w(self) -> float:
@@ -128,5 +128,5 @@ def radio(name: str) -> Radio:
 def energy_per_message_j(time_on_air_s: float, model: Radio) -> float:
     """Transmit energy of one message, E = I x V x T_packet, joules."""
     if not (math.isfinite(time_on_air_s) and time_on_air_s >= 0):
-        raise SDTError(f"time on air must be >= 0 s, got {time_on_air_s!r}")
+        raise SDTError(f"time on air must be >= 0 s, got {shown(time_on_air_s)}")
     return model.tx_power_w * time_on_air_s

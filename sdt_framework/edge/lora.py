@@ -21,8 +21,9 @@ then (SF11 and SF12 at 125 kHz).
 from __future__ import annotations
 
 import math
+from numbers import Integral
 
-from ..errors import SDTError
+from ..errors import SDTError, shown
 
 __all__ = [
     "LDRO_SYMBOL_S",
@@ -39,12 +40,12 @@ MAX_PAYLOAD_BYTES = 255
 
 
 def _check(sf: int, bandwidth_hz: float, coding_rate: int) -> None:
-    if not (isinstance(sf, int) and 6 <= sf <= 12):
-        raise SDTError(f"spreading factor must be an integer 6..12, got {sf!r}")
+    if not (isinstance(sf, Integral) and 6 <= sf <= 12):
+        raise SDTError(f"spreading factor must be an integer 6..12, got {shown(sf)}")
     if not (math.isfinite(bandwidth_hz) and bandwidth_hz > 0):
-        raise SDTError(f"bandwidth must be a positive number of Hz, got {bandwidth_hz!r}")
+        raise SDTError(f"bandwidth must be a positive number of Hz, got {shown(bandwidth_hz)}")
     if coding_rate not in (1, 2, 3, 4):
-        raise SDTError(f"coding rate CR must be 1..4 (4/5..4/8), got {coding_rate!r}")
+        raise SDTError(f"coding rate CR must be 1..4 (4/5..4/8), got {shown(coding_rate)}")
 
 
 def symbol_time_s(sf: int, bandwidth_hz: float) -> float:
@@ -84,9 +85,9 @@ def payload_symbols(
         LowDataRateOptimize; None switches it on when T_sym > 16 ms.
     """
     _check(sf, bandwidth_hz, coding_rate)
-    if not (isinstance(payload_bytes, int) and 0 <= payload_bytes <= MAX_PAYLOAD_BYTES):
+    if not (isinstance(payload_bytes, Integral) and 0 <= payload_bytes <= MAX_PAYLOAD_BYTES):
         raise SDTError(
-            f"LoRa payload must be 0..{MAX_PAYLOAD_BYTES} bytes, got {payload_bytes!r}; "
+            f"LoRa payload must be 0..{MAX_PAYLOAD_BYTES} bytes, got {shown(payload_bytes)}; "
             f"split the data over several messages"
         )
     if low_data_rate is None:
@@ -120,8 +121,10 @@ def time_on_air_s(
     >>> round(time_on_air_s(23, 7, 125e3) * 1e3, 3)
     61.696
     """
-    if not (isinstance(preamble_symbols, int) and preamble_symbols >= 0):
-        raise SDTError(f"preamble length must be a whole number >= 0, got {preamble_symbols!r}")
+    if not (isinstance(preamble_symbols, Integral) and preamble_symbols >= 0):
+        raise SDTError(
+            f"preamble length must be a whole number >= 0, got {shown(preamble_symbols)}"
+        )
     t_sym = symbol_time_s(sf, bandwidth_hz)
     n_payload = payload_symbols(
         payload_bytes,

@@ -34,8 +34,9 @@ DR7 of EU868 (FSK) and the LR-FHSS data rates are not LoRa and are left out.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from numbers import Integral
 
-from ..errors import SDTError, UnknownNameError
+from ..errors import SDTError, UnknownNameError, shown
 
 __all__ = [
     "FHDR_BYTES",
@@ -65,10 +66,12 @@ def phy_payload_bytes(app_bytes: int, fopts_bytes: int = 0) -> int:
 
     ``app_bytes + 13`` plus any FOpts bytes (0..15) carrying MAC commands.
     """
-    if not (isinstance(app_bytes, int) and app_bytes >= 0):
-        raise SDTError(f"application payload must be a whole number of bytes, got {app_bytes!r}")
-    if not (isinstance(fopts_bytes, int) and 0 <= fopts_bytes <= 15):
-        raise SDTError(f"FOpts holds 0..15 bytes, got {fopts_bytes!r}")
+    if not (isinstance(app_bytes, Integral) and app_bytes >= 0):
+        raise SDTError(
+            f"application payload must be a whole number of bytes, got {shown(app_bytes)}"
+        )
+    if not (isinstance(fopts_bytes, Integral) and 0 <= fopts_bytes <= 15):
+        raise SDTError(f"FOpts holds 0..15 bytes, got {shown(fopts_bytes)}")
     return app_bytes + OVERHEAD_BYTES + fopts_bytes
 
 

@@ -31,8 +31,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass, field
+from numbers import Integral
 
-from ..errors import SDTError
+from ..errors import SDTError, shown
 from ..specs import FeatureSetSpec, SensorSpec
 from . import node_defaults as nd
 from .cells import Cell, cell_life
@@ -71,7 +72,7 @@ class NodeSettings:
         for name in ("interval_s", "window_s"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0):
-                raise SDTError(f"{name.removesuffix('_s')} must be > 0 s, got {value!r}")
+                raise SDTError(f"{name.removesuffix('_s')} must be > 0 s, got {shown(value)}")
         for name in (
             "rx_current_a", "sleep_current_a", "mcu_current_a", "mcu_time_s",
             "mcu_acquire_current_a", "regulator_current_a",
@@ -79,10 +80,10 @@ class NodeSettings:
             value = getattr(self, name)
             if value is not None and not (math.isfinite(value) and value >= 0):
                 unit = "s" if name.endswith("_s") else "A"
-                raise SDTError(f"{name} must be >= 0 {unit}, got {value!r}")
-        if not (isinstance(self.rx_symbols, int) and self.rx_symbols >= 0):
+                raise SDTError(f"{name} must be >= 0 {unit}, got {shown(value)}")
+        if not (isinstance(self.rx_symbols, Integral) and self.rx_symbols >= 0):
             raise SDTError(
-                f"receive window must be a whole number of symbols, got {self.rx_symbols!r}"
+                f"receive window must be a whole number of symbols, got {shown(self.rx_symbols)}"
             )
 
 

@@ -17,6 +17,7 @@ from typing import Any, TypeVar
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+from ..errors import shown
 from ..toml_files import parse_toml, validate_file
 
 __all__ = ["DataModel", "Figure", "read_data"]
@@ -49,7 +50,7 @@ class Figure(DataModel):
     @model_validator(mode="after")
     def _finite(self) -> Figure:
         if not (math.isfinite(self.value) and self.value >= 0):
-            raise ValueError(f"value must be a finite number >= 0, got {self.value!r}")
+            raise ValueError(f"value must be a finite number >= 0, got {shown(self.value)}")
         return self
 
     def cited(self) -> str:

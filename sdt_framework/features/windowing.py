@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..arguments import check_real
-from ..errors import ArgumentValueError, SDTError
+from ..errors import ArgumentValueError, SDTError, shown
 
 __all__ = ["SETTLE_S", "WINDOW_S", "Windows", "cut_windows", "samples_for"]
 
@@ -39,8 +39,8 @@ def samples_for(seconds: float, fs: float) -> int:
     product = float(seconds) * float(fs)
     if not math.isfinite(product):
         raise ArgumentValueError(
-            f"{seconds!r} s at {fs!r} Hz is not a finite number of samples; give a finite "
-            f"duration in seconds"
+            f"{shown(seconds)} s at {shown(fs)} Hz is not a finite number of samples; give a "
+            f"finite duration in seconds"
         )
     return round(product)
 
@@ -114,22 +114,22 @@ def cut_windows(
             f"shape {x.shape}"
         )
     if not (np.isfinite(fs) and fs > 0):
-        raise SDTError(f"sampling rate must be a positive number of Hz, got {fs!r}")
+        raise SDTError(f"sampling rate must be a positive number of Hz, got {shown(fs)}")
     for name, seconds, default in (
         ("window_s", window_s, WINDOW_S),
         ("settle_s", settle_s, SETTLE_S),
     ):
         if not math.isfinite(check_real(seconds, name, "seconds")):
             raise ArgumentValueError(
-                f"{name} must be a finite number of seconds, got {seconds!r}; the paper's is "
+                f"{name} must be a finite number of seconds, got {shown(seconds)}; the paper's is "
                 f"{default:g}"
             )
     length = samples_for(window_s, fs)
     settle = samples_for(settle_s, fs)
     if length < 1 or settle < 0:
         raise SDTError(
-            f"window_s={window_s!r} s and settle_s={settle_s!r} s give {length} samples per "
-            f"window and {settle} settling samples at {fs:g} Hz; need >= 1 and >= 0"
+            f"window_s={shown(window_s)} s and settle_s={shown(settle_s)} s give {length} samples "
+            f"per window and {settle} settling samples at {fs:g} Hz; need >= 1 and >= 0"
         )
     n_acq, n_samples = x.shape
     per_acq = max(n_samples - settle, 0) // length

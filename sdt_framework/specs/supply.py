@@ -15,6 +15,8 @@ import re
 
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
+from ..errors import shown
+
 __all__ = ["Supply", "SupplyFigure", "printed_numbers"]
 
 _NUMBER = re.compile(r"(?<![\w.])\d+(?:\.\d+)?(?![\w.])")
@@ -52,7 +54,7 @@ class SupplyFigure(BaseModel):
             raise ValueError("give exactly one of value or absent")
         if self.value is not None:
             if not (math.isfinite(self.value) and self.value >= 0):
-                raise ValueError(f"value must be a finite number >= 0, got {self.value!r}")
+                raise ValueError(f"value must be a finite number >= 0, got {shown(self.value)}")
             if not (self.doc and self.where and self.printed):
                 raise ValueError("a value needs doc, where and printed (the datasheet's words)")
         return self

@@ -38,7 +38,7 @@ import numpy as np
 from scipy import ndimage, signal
 
 from ..chain import degrade
-from ..errors import SDTError
+from ..errors import SDTError, shown
 from ..specs import SensorSpec
 from .pair import Pair
 
@@ -82,7 +82,7 @@ def require_rate(sensor: SensorSpec) -> None:
     if not isinstance(sensor.sampling_rate_hz, float):
         raise SDTError(
             f"--sensor {sensor.name}: samples at the recording's own rate "
-            f"({sensor.sampling_rate_hz!r}), so it has no twin of a device to check or fit; "
+            f"({shown(sensor.sampling_rate_hz)}), so it has no twin of a device to check or fit; "
             f"give the profile of the device's part (e.g. adxl345)"
         )
 
