@@ -8,20 +8,34 @@ from typing import Annotated, Any
 import typer
 
 from ..errors import SDTError
-from .common import console, err_console, print_json, print_table, registry
+from .common import console, print_json, print_table, registry
 from .guards import OVERWRITE_HELP
 
-__all__ = ["degrade_command", "validate_noise_command"]
+__all__ = ["FS_HELP", "FULL_SCALE_HELP", "SIGNAL_HELP", "degrade_command",
+           "validate_noise_command"]  # fmt: skip
+
+FS_HELP = "Rate of INPUT, Hz, for a file that holds none (NPY, CSV, MAT); checked otherwise."
+SIGNAL_HELP = "Signal of a file holding several (`sdt dataset inspect FILE` lists them)."
+FULL_SCALE_HELP = "Acceleration of a full-scale sample of an integer WAV file, g."
 
 
 def degrade_command(
     ctx: typer.Context,
     input_path: Annotated[
-        Path, typer.Argument(metavar="INPUT", help="Recording, .npy or .csv, in g.")
+        Path,
+        typer.Argument(
+            metavar="INPUT",
+            help="Recording in any registered format (sdt plugins list; NPY, CSV, MAT, TDMS, "
+            "WAV, UFF58, LVM, IDE...), in g unless the file states its units.",
+        ),
     ],
     sensor: Annotated[str, typer.Option("--sensor", help="Sensor profile name, e.g. adxl345.")],
-    fs: Annotated[float, typer.Option("--fs", help="Rate of INPUT, Hz.")],
     out: Annotated[Path, typer.Option("--out", help="Output file, .npy or .csv.")],
+    fs: Annotated[float | None, typer.Option("--fs", help=FS_HELP)] = None,
+    signal: Annotated[str | None, typer.Option("--signal", help=SIGNAL_HELP)] = None,
+    full_scale_g: Annotated[
+        float | None, typer.Option("--full-scale-g", help=FULL_SCALE_HELP)
+    ] = None,
     seed: Annotated[int, typer.Option("--seed", help="Base seed of the injected noise.")] = 0,
     no_noise: Annotated[bool, typer.Option("--no-noise", help="Do not inject noise.")] = False,
     first_index: Annotated[
@@ -31,14 +45,16 @@ def degrade_command(
 ) -> None:
     """Degrade a recording to what SENSOR would have recorded (docs/chain.md).
 
-    INPUT is 1-D (one acquisition) or 2-D (rows = acquisitions, each a whole
-    continuous acquisition). The output keeps that shape convention. A CSV is
-    read as a manifest's CSV is: a header line is skipped, a time column is
-    dropped (with a note), and the longer axis is time, so a `time,acc` file is
-    one acquisition. --out may not be INPUT itself, nor an existing file
-    unless --overwrite is given. A file whose samples (read
-    from its header) cannot fit in the memory available is refused before it
-    is read.
+    INPUT is read by its registered reader, as a manifest row is: the rate and
+    units from the file where it holds them (TDMS, WAV, UFF58, LVM, IDE), --fs
+    where it holds none (NPY, CSV, MAT); a --fs that contradicts the file is
+    refused naming both. A file holding several signals needs --signal NAME
+    (`sdt dataset inspect INPUT` lists them). Each acquisition (a row of a
+    2-D array; the longer axis is time) is a whole continuous acquisition; one
+    acquisition is written 1-D, several as rows. A CSV's header line is skipped
+    and its time column dropped (with a note). --out may not be INPUT itself,
+    nor an existing file unless --overwrite is given. A file whose samples
+    cannot fit in the memory available is refused before they are read.
 
     Example:
 
@@ -46,39 +62,41 @@ def degrade_command(
 
       sdt degrade data/synthetic/Vibration/Motor-2/100/healthy\\ 1/*-ch1.csv \\
         --sensor adxl345 --fs 20000 --seed 0 --out healthy_adxl345.npy
+
+      sdt degrade tests/data/endaq/SSX_Data.IDE --signal 8:x --sensor adxl345 \\
+        --out ide_adxl345.npy   # the rate from the file's timestamps
     """
     from ..chain import degrade  # scipy.signal: imported on use so `sdt --help` starts fast
     from ..data.signal_sizes import DEGRADE_BYTES_PER_SAMPLE
     from .guards import check_output_file, os_errors
-    from .signal_io import SUFFIXES, check_signal_size, load_signal, save_array
+    from .signal_io import SUFFIXES, open_input, save_array
 
     with os_errors():
         spec = registry(ctx).sensor(sensor)
         check_output_file(out, "--out", SUFFIXES, inputs=[input_path], overwrite=overwrite)
         split = "split it into shorter files (rows of a 2-D .npy one file at a time, with "
-        check_signal_size(input_path, DEGRADE_BYTES_PER_SAMPLE, split + "--first-index)")
-        x, note = load_signal(input_path)
-        _note(note)
+        opened = open_input(
+            input_path, registry(ctx).signal_readers(), DEGRADE_BYTES_PER_SAMPLE,
+            split + "--first-index)", signal=signal, rate_hz=fs,
+            options={"full_scale_g": full_scale_g},
+        )  # fmt: skip
+        x = opened.read_g()
+        x = x[0] if x.shape[0] == 1 else x
         y, fs_out = degrade(
-            x, fs, spec, seed, noise=not no_noise, label=str(input_path), first_index=first_index
-        )
+            x, opened.rate_hz, spec, seed, noise=not no_noise, label=opened.label,
+            first_index=first_index,
+        )  # fmt: skip
         save_array(out, y)
     rows = 1 if y.ndim == 1 else y.shape[0]
     noise_state = "off" if no_noise else ("on" if spec.inject_noise else "off (profile)")
     console.print(
-        f"{input_path}: {rows} acquisition(s) x {x.shape[-1]} samples at {fs:g} Hz -> "
-        f"{rows} x {y.shape[-1]} at {fs_out:g} Hz with {spec.name} "
-        f"(seed {seed}, noise {noise_state}) -> {out}",
+        f"{opened.label}: {rows} acquisition(s) x {x.shape[-1]} samples at "
+        f"{opened.rate_hz:g} Hz ({opened.rate_from}) -> {rows} x {y.shape[-1]} at "
+        f"{fs_out:g} Hz with {spec.name} (seed {seed}, noise {noise_state}) -> {out}",
         highlight=False,
         markup=False,  # a part's mode is in brackets
         soft_wrap=True,
     )
-
-
-def _note(note: str | None) -> None:
-    """Print a reader's note (a dropped time column) once, on stderr, as plain text."""
-    if note:
-        err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
 
 
 def _cell(stats: dict[str, Any], key: str) -> str:
@@ -125,18 +143,28 @@ def validate_noise_command(
         Path | None,
         typer.Option(
             "--recording",
-            help="Zero-motion recording of one axis, .csv or .npy, or an enDAQ .IDE file "
-            "(the --axis of the channel whose part is --sensor's, or of --channel).",
+            help="Zero-motion recording of one axis in any registered format (an enDAQ .IDE "
+            "file: the --axis of the channel whose part is --sensor's, or of --channel).",
         ),
     ] = None,
+    signal: Annotated[str | None, typer.Option("--signal", help=SIGNAL_HELP)] = None,
     channel: int | None = typer.Option(
         None, "--channel", help="Channel id in an .IDE recording (default: --sensor's part)."
     ),
     fs: float | None = typer.Option(
-        None, "--fs", help="Rate of the recording, Hz (default: the sensor's rate)."
+        None,
+        "--fs",
+        help="Rate of a recording that holds none, Hz (default: the sensor's output rate); "
+        "checked against a file's own.",
     ),
-    unit: str = typer.Option("g", "--unit", help="Unit of the recording: g, mg or lsb."),
+    unit: str | None = typer.Option(
+        None,
+        "--unit",
+        help="Unit of a recording that states none: g (default), mg, m/s^2 or lsb; checked "
+        "against a file's own.",
+    ),
     scale: float | None = typer.Option(None, "--scale", help="g per LSB when --unit lsb."),
+    full_scale_g: float | None = typer.Option(None, "--full-scale-g", help=FULL_SCALE_HELP),
     seed: int = typer.Option(0, "--seed", help="Seed of the SDT noise."),
     windows: int = typer.Option(8, "--windows", help="Number of non-overlapping windows."),
     window_length: int = typer.Option(2048, "--window-length", help="Samples per window."),
@@ -164,8 +192,10 @@ def validate_noise_command(
     The chain runs on x_ref = 0 at --reference-fs; its output is cut into
     --windows windows of --window-length samples; per window: RMS (mean
     removed, mg) and NSD (sqrt of the mean Welch PSD over 10..1500 Hz,
-    µg/√Hz). With --recording the same statistics of the recording, the
-    relative error and Welch t-test p-values are added. An Allan table reads
+    µg/√Hz). With --recording (read by its registered reader: the rate and
+    units from the file where it holds them; --fs, --unit where it does not)
+    the same statistics of the recording, the relative error and Welch
+    t-test p-values are added. An Allan table reads
     the white-noise density N (and VRW) and the bias instability B off the
     overlapping Allan deviation of the whole SDT output and of the whole
     recording (tau up to a twentieth of each record: more --windows reach
@@ -182,7 +212,6 @@ def validate_noise_command(
 
       sdt validate-noise --sensor adxl345 --recording tests/data/endaq/SSX_Data.IDE --windows 4
     """
-    from ..data.ide import is_ide
     from ..data.sizes import Cost
     from ..validation import noise_check, plot_noise_check  # imported on use, as in degrade
     from ..validation.allan import allan_seconds
@@ -191,7 +220,7 @@ def validate_noise_command(
     from ..validation.noise_plot import plot_formats
     from .allan_table import print_allan_table
     from .guards import check_cost, check_output_file, os_errors
-    from .signal_io import load_signal, to_g
+    from .signal_io import zero_motion_recording
 
     with os_errors():
         spec = registry(ctx).sensor(sensor)
@@ -210,12 +239,12 @@ def validate_noise_command(
             "--windows or --window-length",
         )
         rec = None
-        if recording is not None and is_ide(recording):
-            rec, fs = _ide_axis(recording, channel, spec.name, axis, fs)
-        elif recording is not None:
-            loaded, note = load_signal(recording)
-            _note(note)
-            rec = to_g(loaded, unit.lower(), scale, str(recording))
+        if recording is not None:
+            rec, fs = zero_motion_recording(
+                registry(ctx).signal_readers(), recording, spec, axis, channel=channel,
+                signal=signal, fs=fs, unit=unit, scale=scale, full_scale_g=full_scale_g,
+                reference_fs=reference_fs,
+            )  # fmt: skip
         result = noise_check(
             spec,
             recording=rec,
@@ -237,18 +266,3 @@ def validate_noise_command(
     print_allan_table(data["allan"], result.sensor, axis)
     if plot is not None:
         console.print(f"figure: {plot}", highlight=False)
-
-
-def _ide_axis(path: Path, channel: int | None, sensor: str, axis: str, fs: float | None):
-    """(samples in g, rate) of ``axis`` of an IDE recording's channel; the rate measured
-    from the timestamps unless --fs is given."""
-    from ..data.ide import inspect_ide, part_channel, read_ide
-
-    if channel is None:
-        channel = part_channel(path, inspect_ide(path), sensor)
-    read = read_ide(path, channel, [axis])
-    _note(read.note)
-    rate = read.rate_hz if fs is None else fs
-    _note(f"{path.name}: channel {channel} axis {axis}, {read.values.shape[1]} samples at "
-          f"{read.rate_hz:.2f} Hz (measured from the timestamps)")  # fmt: skip
-    return read.values[0], rate

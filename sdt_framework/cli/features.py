@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Annotated
 
 import typer
 
 from ..errors import SDTError
+from .chain import FS_HELP, FULL_SCALE_HELP, SIGNAL_HELP
 from .common import console, print_json, registry, table
 from .guards import OVERWRITE_HELP
 
@@ -54,39 +55,25 @@ def list_features(
     table("Feature sets", ["name", "features [unit]", "B/axis", "B/triaxial", "distribution"], rows)
 
 
-def _load_npy(path: Path) -> Any:
-    """Read a .npy signal; numpy is imported here to keep ``sdt --help`` fast."""
-    import numpy as np
-
-    from ..data.tokens import brief
-
-    if path.suffix.lower() != ".npy":
-        raise SDTError(f"{path}: input must be a .npy file (1-D, or 2-D rows = acquisitions)")
-    from ..inputs import require_regular_file
-
-    require_regular_file(path, "signal file")
-    if not path.is_file():
-        what = "is a folder; give the signal file" if path.is_dir() else "no such file"
-        raise SDTError(f"{path}: {what}; check the path")
-    try:
-        return np.load(path, allow_pickle=False)
-    except (OSError, ValueError, EOFError) as exc:
-        raise SDTError(f"{path}: cannot read as .npy ({brief(exc)})") from None
-
-
 @app.command("extract")
 def extract_features(
     ctx: typer.Context,
     input_path: Annotated[
         Path,
         typer.Argument(
-            metavar="INPUT", help="Signal in g: .npy, 1-D or 2-D (rows = acquisitions)."
+            metavar="INPUT",
+            help="Signal in any registered format (NPY, CSV, MAT, TDMS, WAV, UFF58, LVM, "
+            "IDE...), in g unless the file states its units.",
         ),
     ],
-    fs: Annotated[float, typer.Option("--fs", help="Sampling rate of INPUT, Hz.")],
     out: Annotated[
         Path, typer.Option("--out", help="Output .csv or .parquet (written atomically).")
     ],
+    fs: Annotated[float | None, typer.Option("--fs", help=FS_HELP)] = None,
+    signal: Annotated[str | None, typer.Option("--signal", help=SIGNAL_HELP)] = None,
+    full_scale_g: Annotated[
+        float | None, typer.Option("--full-scale-g", help=FULL_SCALE_HELP)
+    ] = None,
     feature_set: Annotated[
         str,
         typer.Option("--set", help="Feature set name, or names joined by '+' (paper8+env_bpfo)."),
@@ -99,8 +86,13 @@ def extract_features(
 ) -> None:
     """Extract features: one row per window, with acquisition and window index.
 
-    Units travel with the values: a CSV feature column is headed 'name\\[unit]'
-    (V_RMS\\[mm/s]); a Parquet feature column carries 'unit' field metadata.
+    INPUT is read by its registered reader, as `sdt degrade` reads it: the
+    rate and units from the file where it holds them, --fs where it holds
+    none (a --fs that contradicts the file is refused naming both), --signal
+    NAME where it holds several; each acquisition is a row of a 2-D array
+    (the longer axis is time). Units travel with the values: a CSV feature
+    column is headed 'name\\[unit]' (V_RMS\\[mm/s]); a Parquet feature column
+    carries 'unit' field metadata.
     --out may not be INPUT (nor a link to it), nor an existing file unless
     --overwrite is given; its folder is checked first. A
     file whose samples (from its header) cannot fit in the memory available is
@@ -114,11 +106,13 @@ def extract_features(
         --sensor adxl345 --fs 20000 --out healthy_adxl345.npy
 
       sdt features extract healthy_adxl345.npy --fs 3200 --set paper8 --out features.parquet
+
+      sdt features extract tests/data/endaq/SSX_Data.IDE --signal 8:x --out ide_features.csv
     """
     from ..data.signal_sizes import FEATURES_BYTES_PER_SAMPLE
     from ..features import extract, resolve_feature_set, write_feature_table
     from .guards import check_output_file, os_errors
-    from .signal_io import check_signal_size
+    from .signal_io import open_input
 
     for option, seconds in (("--window-s", window_s), ("--settle-s", settle_s)):
         if not math.isfinite(seconds):
@@ -131,16 +125,19 @@ def extract_features(
             out, "--out", (".csv", ".parquet"), inputs=[input_path], overwrite=overwrite
         )
         advice = "split it into shorter files (rows of a 2-D .npy a few at a time)"
-        if input_path.suffix.lower() == ".npy":
-            check_signal_size(input_path, FEATURES_BYTES_PER_SAMPLE, advice)
-        signal = _load_npy(input_path)
+        opened = open_input(
+            input_path, registry(ctx).signal_readers(), FEATURES_BYTES_PER_SAMPLE, advice,
+            signal=signal, rate_hz=fs, options={"full_scale_g": full_scale_g},
+        )  # fmt: skip
         result = extract(
-            signal, fs, spec, window_s=window_s, settle_s=settle_s, label=str(input_path)
-        )
+            opened.read_g(), opened.rate_hz, spec, window_s=window_s, settle_s=settle_s,
+            label=opened.label,
+        )  # fmt: skip
         write_feature_table(result, out)
     n_acq = len(set(result.acquisition.tolist()))
     console.print(
-        f"wrote {result.values.shape[0]} windows x {len(result.names)} features "
+        f"{opened.label} at {opened.rate_hz:g} Hz ({opened.rate_from}): wrote "
+        f"{result.values.shape[0]} windows x {len(result.names)} features "
         f"({spec.name}, {result.window_length} samples/window, {n_acq} acquisition(s), "
         f"{spec.bytes_per_window} B/window/axis) to {out}",
         markup=False,

@@ -1,53 +1,49 @@
-"""Reading and writing signal arrays for the chain commands (.npy or .csv).
+"""Reading and writing signal arrays for the commands that take a signal file.
 
-A CSV is read by the same rule as a manifest's CSV signal
-(:func:`sdt_framework.data.csv_signal.read_csv_signal`): a header line and a
-time column are detected (the time column is dropped and a note says so), and
-the longer axis is time, so an ordinary ``time,acc`` file is one acquisition
-and a ``numpy.savetxt`` of an (acquisitions, samples) array is that many rows.
-A single series is returned 1-D. An NPY array is taken as stored (1-D, or
-rows = acquisitions). Writes are atomic (:mod:`sdt_framework.io`); CSV values
-use ``%.17g`` so a float64 survives the round trip exactly. Every failure is a
+A signal file is read through the registered readers, handed down from the
+command's registry (:func:`open_input`, :mod:`sdt_framework.data.one_signal`):
+any registered format, with the rate and units the file holds, ``--fs`` only
+where it holds none, ``--signal`` where it holds several. Before reading,
+:func:`check_signal_size` sizes the job from the file's header (NPY, CSV,
+MAT: before a CSV is parsed) and :func:`open_input` from the reader's count
+of samples, and a job that cannot fit in the memory available is refused;
+:func:`check_pair_size` does the same for a twin pair. Outputs are ``.npy`` or
+``.csv``, written atomically (:mod:`sdt_framework.io`); CSV values use
+``%.17g`` so a float64 survives the round trip exactly. Every failure is a
 one-line :class:`~sdt_framework.errors.SDTError` naming the path.
-
-Before reading, :func:`check_signal_size` and :func:`check_pair_size` size the
-job from the files' headers (:mod:`sdt_framework.data.signal_sizes`) and
-refuse one that cannot fit in the memory available.
 """
 
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
-from typing import NamedTuple
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..errors import SDTError
-from ..inputs import require_regular_file
 from ..io import atomic_path
+from .common import err_console
+
+if TYPE_CHECKING:
+    from ..data import FileSignal
 
 __all__ = [
     "SUFFIXES",
     "UNITS",
-    "LoadedSignal",
     "check_pair_size",
     "check_signal_size",
-    "load_signal",
+    "note",
+    "open_input",
     "save_array",
     "to_g",
+    "zero_motion_recording",
 ]
 
 SUFFIXES = (".npy", ".csv")
-UNITS = ("g", "mg", "lsb")
-
-
-class LoadedSignal(NamedTuple):
-    """A signal read from a file, and a note when a CSV time column was dropped."""
-
-    data: NDArray[np.float64]
-    note: str | None
+UNITS = ("g", "mg", "m/s^2", "lsb")
 
 
 def _suffix(path: Path) -> str:
@@ -57,28 +53,31 @@ def _suffix(path: Path) -> str:
     return suffix
 
 
-def load_signal(path: str | os.PathLike[str]) -> LoadedSignal:
-    """Read a numeric array from ``path`` (.npy, or .csv by the shared CSV rule)."""
-    from ..data.csv_signal import read_csv_signal  # the one CSV rule (imported on use)
-    from ..data.tokens import brief
+def note(text: str | None) -> None:
+    """Print a reader's note (a dropped time column, a resampled grid) on stderr, plain."""
+    if text:
+        err_console.print(f"note: {text}", markup=False, highlight=False, soft_wrap=True)
 
-    path = Path(path)
-    if path.is_dir():
-        raise SDTError(f"{path}: is a folder; give the signal file")
-    suffix = _suffix(path)
-    require_regular_file(path, "signal file")
-    if not path.is_file():
-        raise SDTError(f"{path}: no such file; check the path")
-    if suffix == ".csv":
-        parsed = read_csv_signal(path)
-        data = parsed.data[0] if parsed.data.shape[0] == 1 else parsed.data
-        return LoadedSignal(data, parsed.note)
-    try:
-        return LoadedSignal(np.asarray(np.load(path, allow_pickle=False)), None)
-    except OSError as exc:
-        raise SDTError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
-    except (ValueError, EOFError) as exc:
-        raise SDTError(f"{path}: not a readable .npy file ({brief(exc)})") from None
+
+def open_input(
+    path: Path,
+    readers: Sequence[Any],
+    bytes_per_sample: int,
+    advice: str,
+    **choices: Any,
+) -> FileSignal:
+    """The signal of ``path`` to read (any registered format), sized against the memory
+    available at ``bytes_per_sample``; ``choices`` go to
+    :func:`~sdt_framework.data.one_signal.open_signal` (``signal``, ``rate_hz``, ``units``,
+    ``options``, ``default_rate``). The reader's note is printed."""
+    from ..data import open_signal
+    from .guards import check_memory
+
+    check_signal_size(path, bytes_per_sample, advice)  # a CSV before it is parsed
+    signal = open_signal(path, readers, **choices)
+    note(signal.info.note)
+    check_memory(path, f"{signal.n_values:,} samples", signal.n_values * bytes_per_sample, advice)
+    return signal
 
 
 def save_array(path: str | os.PathLike[str], x: NDArray[np.float64]) -> Path:
@@ -93,12 +92,53 @@ def save_array(path: str | os.PathLike[str], x: NDArray[np.float64]) -> Path:
     return path
 
 
+def zero_motion_recording(
+    readers: Sequence[Any],
+    path: Path,
+    spec: Any,
+    axis: str,
+    *,
+    channel: int | None,
+    signal: str | None,
+    fs: float | None,
+    unit: str | None,
+    scale: float | None,
+    full_scale_g: float | None,
+    reference_fs: float,
+) -> tuple[NDArray[np.float64], float]:
+    """(samples in g, rate) of ``sdt validate-noise --recording``: through its reader, the
+    rate the file's or --fs or the sensor's output rate; of an IDE file the ``axis`` of the
+    channel of the sensor's part (or --channel) unless --signal names one."""
+    from ..chain import compile_chain
+    from ..data.ide import inspect_ide, is_ide, part_channel
+    from ..data.signal_sizes import DEGRADE_BYTES_PER_SAMPLE
+
+    if unit is not None and unit.lower() not in UNITS:
+        raise SDTError(f"--unit {unit!r}: use one of {', '.join(UNITS)}")
+    if channel is not None and (signal is not None or not is_ide(path)):
+        raise SDTError(f"{path}: --channel is for an .IDE recording without --signal; drop it")
+    if signal is None and is_ide(path):
+        chosen = part_channel(path, inspect_ide(path), spec.name) if channel is None else channel
+        signal = f"{chosen}:{axis}"
+    opened = open_input(
+        path, readers, DEGRADE_BYTES_PER_SAMPLE, "cut the recording to a shorter stretch",
+        signal=signal, rate_hz=fs, units=None if unit is None else unit.lower(),
+        options={"full_scale_g": full_scale_g},
+        default_rate=(compile_chain(spec, reference_fs).fs_out,
+                      "no rate in the file: the sensor's output rate; --fs gives it"),
+    )  # fmt: skip
+    values = to_g(opened.read(), opened.units, scale, str(path))
+    rate, source = opened.rate_hz, opened.rate_from
+    note(f"{opened.label}: {opened.n_values:,} samples at {rate:.6g} Hz ({source})")
+    return values, rate
+
+
 def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> NDArray[np.float64]:
-    """Convert a recording from ``unit`` (g, mg, or raw LSB times ``scale`` g/LSB) to g."""
-    if unit == "g":
-        return x
-    if unit == "mg":
-        return x * 1e-3
+    """Convert a recording from ``unit`` (g, mg, m/s^2, or raw LSB times ``scale`` g/LSB) to g."""
+    from ..data.one_signal import TO_G
+
+    if unit in TO_G:
+        return x if unit == "g" else x * TO_G[unit]
     if unit == "lsb":
         if scale is None or not scale > 0:
             raise SDTError(f"{label}: --unit lsb needs --scale G_PER_LSB > 0, got {scale}")

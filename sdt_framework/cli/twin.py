@@ -37,6 +37,7 @@ def _load(ctx: typer.Context, pair: Path, sensor: str, axes: str | None, device:
     require_rate(spec)  # before the pair is read: check and fit refuse alike
     with os_errors(str(pair)):
         loaded = load_pair(pair, spec.name, axes=chosen, device_channel=device,
+                           readers=registry(ctx).signal_readers(),
                            reference_channel=reference)  # fmt: skip
     if reference_scale != 1.0:
         ref = loaded.reference

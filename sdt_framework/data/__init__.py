@@ -11,6 +11,11 @@ open_nln_emp, open_manifest, open_synthetic
     ``synthetic-pump``).
 write_nln_emp
     Write any dataset in the NLN-EMP CSV layout.
+open_signal, FileSignal
+    One signal of one file through the readers the caller hands down
+    (``open_signal(file, registry.signal_readers())``), its rate and units
+    settled against the file's: what ``sdt degrade`` and ``sdt features extract``
+    read.
 """
 
 from __future__ import annotations
@@ -23,6 +28,7 @@ if TYPE_CHECKING:
     from .cache import ArrayCache, default_cache_dir
     from .manifest import open_manifest
     from .nln_emp import PAPER_SUBSETS, open_nln_emp, parse_condition
+    from .one_signal import FileSignal, open_signal
     from .open import open_dataset, write_nln_emp
     from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
     from .synth_dataset import SyntheticPump, open_synthetic
@@ -37,6 +43,8 @@ _WHERE = {
     "PAPER_SUBSETS": "nln_emp",
     "open_nln_emp": "nln_emp",
     "parse_condition": "nln_emp",
+    "FileSignal": "one_signal",
+    "open_signal": "one_signal",
     "open_dataset": "open",
     "write_nln_emp": "open",
     "DataFileError": "recording",
@@ -53,6 +61,7 @@ __all__ = [
     "ArrayCache",
     "DataFileError",
     "Dataset",
+    "FileSignal",
     "Recording",
     "Skipped",
     "SyntheticPump",
@@ -61,6 +70,7 @@ __all__ = [
     "open_dataset",
     "open_manifest",
     "open_nln_emp",
+    "open_signal",
     "open_synthetic",
     "parse_condition",
     "write_nln_emp",

@@ -10,6 +10,8 @@ are used (a microphone subchannel is not an axis).
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
+from typing import Any
 
 from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
 from ..data.readers import RATE_RANGE_HZ
@@ -63,15 +65,17 @@ def load_pair(
     axes: list[str] | None = None,
     device_channel: int | None = None,
     reference_channel: int | None = None,
+    readers: Sequence[Any] | None = None,
 ) -> Pair:
     """The pair at ``path`` for the twin of ``sensor`` (a profile name): an IDE file, or a
-    TOML pair file naming two signals (:mod:`.pair_toml`)."""
+    TOML pair file naming two signals (:mod:`.pair_toml`), read by ``readers``
+    (``registry.signal_readers()``, needed for a TOML pair)."""
     path = str(path)
     require_regular_file(path, "paired recording")  # a device or a pipe, named as such
     if is_pair_toml(path):
         if device_channel is not None or reference_channel is not None:
             raise SDTError(f"{path}: a TOML pair names its signals; channel options are for IDE")
-        return _checked(load_toml_pair(path, axes))
+        return _checked(load_toml_pair(path, axes, readers))
     if not is_ide(path):
         raise SDTError(
             f"{path}: not an enDAQ IDE file (.IDE) nor a pair file (.toml); give a paired recording"

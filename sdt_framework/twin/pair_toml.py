@@ -3,7 +3,7 @@
 Two tables, ``[reference]`` and ``[device]``, each naming one signal::
 
     [reference]
-    file = "piezo.csv"            # CSV, NPY or MAT; relative to this TOML's folder
+    file = "piezo.csv"            # any registered format; relative to this TOML's folder
     columns = ["ax", "ay", "az"]  # CSV header names, one per axis (CSV only)
     time_column = "t"             # timestamps in s (CSV); or rate_hz = 20000
     axes = ["x", "y", "z"]        # which axis each column (or array row) measures
@@ -16,25 +16,30 @@ Two tables, ``[reference]`` and ``[device]``, each naming one signal::
     axes = ["x", "y", "z"]
     start_s = 0.0                 # time of the first sample on the reference's clock
 
+A file is read by its registered reader (handed down by the caller, as
+``sdt degrade`` reads one: :mod:`sdt_framework.data.one_signal`): ``rate_hz``
+and ``units`` are needed only where the file holds none (a TDMS, WAV, UFF58,
+LVM or IDE file states its rate), and are refused naming both values where
+they contradict it; ``variable`` names the signal of a file holding several.
 A signal with a time column gets the same treatment as an IDE channel: its
 rate measured from the timestamps, resampled onto an even grid with a note
-when they stray (:mod:`sdt_framework.data.timebase`). A MAT file names its
-array with ``variable``.
+when they stray (:mod:`sdt_framework.data.timebase`).
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, FiniteFloat, model_validator
 
 from ..data.csv_signal import read_csv_signal
+from ..data.one_signal import TO_G, open_signal
 from ..data.recording import DataFileError
-from ..data.signal_files import read_signal
 from ..data.timebase import on_even_grid
-from ..errors import SDTError
+from ..errors import ArgumentValueError, SDTError
 from ..toml_files import read_toml, validate_file
 from .signals import Pair, Signal, chosen_axes, digest
 
@@ -42,8 +47,6 @@ __all__ = ["PairSignal", "is_pair_toml", "load_toml_pair"]
 
 #: a part name is printed up to this many characters
 PART_CHARACTERS = 60
-#: multiply by this to get g (standard gravity for m/s^2, ISO 80000-3)
-TO_G = {"g": 1.0, "mg": 1e-3, "m/s^2": 1 / 9.80665}
 
 
 class PairSignal(BaseModel):
@@ -58,13 +61,13 @@ class PairSignal(BaseModel):
     time_column: str | None = None
     rate_hz: FiniteFloat | None = Field(None, gt=0)
     start_s: FiniteFloat = 0.0
-    units: Literal["g", "mg", "m/s^2"] = "g"
+    units: Literal["g", "mg", "m/s^2"] | None = None
     part: str | None = None
 
     @model_validator(mode="after")
     def _consistent(self) -> PairSignal:
-        if (self.rate_hz is None) == (self.time_column is None):
-            raise ValueError("give exactly one of rate_hz or time_column")
+        if self.rate_hz is not None and self.time_column is not None:
+            raise ValueError("give rate_hz or time_column, not both")
         if len(set(self.axes)) != len(self.axes):
             raise ValueError(f"axes {self.axes} name an axis twice")
         if self.columns is not None and len(self.columns) != len(self.axes):
@@ -80,7 +83,10 @@ class PairSignal(BaseModel):
             )
         csv = self.file.lower().endswith(".csv")
         if not csv and (self.columns or self.time_column):
-            raise ValueError("columns and time_column are for CSV files (give rate_hz)")
+            raise ValueError(
+                "columns and time_column are for CSV files (the rate comes from the file, or "
+                "rate_hz)"
+            )
         return self
 
 
@@ -106,39 +112,44 @@ def is_pair_toml(path: str | Path) -> bool:
     return Path(path).suffix.lower() == ".toml"
 
 
-def _samples(folder: Path, side: str, spec: PairSignal) -> tuple[np.ndarray, np.ndarray | None]:
-    """(values (axes, n) in the file's unit, timestamps or None)."""
+def _samples(folder: Path, side: str, spec: PairSignal, readers: Sequence[Any]
+             ) -> tuple[np.ndarray, np.ndarray | None, float]:  # fmt: skip
+    """(values (axes, n) in g, timestamps or None, rate in Hz or 0 with timestamps)."""
     file = folder / spec.file
     if not file.is_file():
         raise SDTError(f"{file}: [{side}] file not found; paths are relative to the pair file")
-    times = None
     if spec.columns is not None:  # the signal columns and the time column in one read
+        if spec.rate_hz is None and spec.time_column is None:
+            raise SDTError(f"{file}: [{side}] a CSV holds no rate; give rate_hz or time_column")
         extra = [] if spec.time_column is None else [spec.time_column]
         table = read_csv_signal(file, [*spec.columns, *extra]).data
-        values = table[: len(spec.columns)]
-        if extra:
-            times = table[-1]
-    else:
-        values = read_signal(file, spec.variable)
-        if spec.time_column is not None:
-            times = read_csv_signal(file, spec.time_column).data[0]
+        times = table[-1] if extra else None
+        return table[: len(spec.columns)] * TO_G[spec.units or "g"], times, spec.rate_hz or 0.0
+    spelling = {
+        "signal": f"variable = NAME in [{side}]",
+        "rate": f"rate_hz in [{side}]",
+        "units": f"units in [{side}]",
+    }
+    timed = (0.0, "time_column") if spec.time_column is not None else None
+    opened = open_signal(file, readers, signal=spec.variable, rate_hz=spec.rate_hz,
+                         units=spec.units, default_rate=timed, spelling=spelling)  # fmt: skip
+    values = opened.read_g()
     if values.shape[0] != len(spec.axes):
         raise SDTError(
             f"{file}: [{side}] holds {values.shape[0]} signal(s) for axes {spec.axes}; "
             f"name one column (or array row) per axis"
         )
-    return values, times
+    times = None if timed is None else read_csv_signal(file, spec.time_column).data[0]
+    return values, times, opened.rate_hz
 
 
-def _signal(folder: Path, side: str, spec: PairSignal) -> Signal:
-    values, times = _samples(folder, side, spec)
-    values = values * TO_G[spec.units]
+def _signal(folder: Path, side: str, spec: PairSignal, readers: Sequence[Any]) -> Signal:
+    values, times, rate = _samples(folder, side, spec, readers)
     label = f"[{side}] {spec.file}"
     if spec.part is not None:
         spec = spec.model_copy(update={"part": _cut(spec.part)})
     if times is None:
-        return Signal(label, spec.part, tuple(spec.axes), values, float(spec.rate_hz or 0),
-                      spec.start_s)  # fmt: skip
+        return Signal(label, spec.part, tuple(spec.axes), values, rate, spec.start_s)
     if len(times) != values.shape[1] or len(times) < 3 or np.any(np.diff(times) <= 0):
         raise SDTError(
             f"{folder / spec.file}: [{side}] time_column {spec.time_column!r} must give one "
@@ -149,13 +160,21 @@ def _signal(folder: Path, side: str, spec: PairSignal) -> Signal:
                   even.start_s + spec.start_s, even.note, even.rate_sd_hz)  # fmt: skip
 
 
-def load_toml_pair(path: str | Path, axes: list[str] | None = None) -> Pair:
-    """The pair described by the TOML file at ``path``, on the axes both sides share."""
+def load_toml_pair(
+    path: str | Path, axes: list[str] | None = None, readers: Sequence[Any] | None = None
+) -> Pair:
+    """The pair described by the TOML file at ``path``, on the axes both sides share; its
+    files read by ``readers`` (``registry.signal_readers()``)."""
     path = Path(path)
+    if readers is None:
+        raise ArgumentValueError(
+            f"{path}: a pair file's signals are read by the registered readers; pass "
+            f"readers=registry.signal_readers()"
+        )
     parsed = validate_file(_PairFile, read_toml(path, what="pair file"), path)
     try:
-        ref = _signal(path.parent, "reference", parsed.reference)
-        dev = _signal(path.parent, "device", parsed.device)
+        ref = _signal(path.parent, "reference", parsed.reference, readers)
+        dev = _signal(path.parent, "device", parsed.device, readers)
     except DataFileError as exc:
         raise SDTError(str(exc)) from None
     chosen = chosen_axes(path, ref.axes, dev.axes, axes, "both signals")

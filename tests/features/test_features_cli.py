@@ -11,6 +11,7 @@ import pyarrow.parquet as pq
 import pytest
 from click.testing import Result
 from sdt_plugins.features import paper8
+from sdt_plugins.readers import npy as npy_reader
 from typer.testing import CliRunner
 
 from sdt_framework import Registry, build_registry
@@ -28,7 +29,7 @@ def p2p(windows: np.ndarray, fs: float) -> np.ndarray:
 
 
 def registry() -> Registry:
-    reg = build_registry(entry_points=False, plugins=[paper8], environ={})
+    reg = build_registry(entry_points=False, plugins=[paper8, npy_reader], environ={})
     reg.add(p2p.spec)
     return reg
 
@@ -132,7 +133,7 @@ def test_main_prints_one_line_and_exits_2(
 ) -> None:
     bad = tmp_path / "x.npy"
     np.save(bad, np.zeros((2, 2, 2)))
-    monkeypatch.setenv("SDT_PLUGINS", "paper8")  # only the built-in feature plugin
+    monkeypatch.setenv("SDT_PLUGINS", "paper8,reader-npy")  # the feature set and the reader
     monkeypatch.setattr(
         sys,
         "argv",
@@ -142,7 +143,7 @@ def test_main_prints_one_line_and_exits_2(
         main()
     assert info.value.code == 2
     err = capsys.readouterr().err
-    assert "1-D signal or a 2-D array" in err and "Traceback" not in err
+    assert "array of shape (2, 2, 2); expected 1-D or 2-D" in err and "Traceback" not in err
 
 
 def test_help_has_an_example() -> None:

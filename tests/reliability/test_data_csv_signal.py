@@ -46,12 +46,13 @@ def test_time_acc_csv_is_one_acquisition_in_degrade(
 
 def test_same_rule_in_manifest_and_degrade(tmp_path: Path, acc: np.ndarray) -> None:
     """A headerless (samples, 2) file: a leading regular time axis is found by value."""
-    from sdt_framework.cli.signal_io import load_signal
+    from sdt_framework.data.one_signal import open_signal
 
     src = tmp_path / "s.csv"
     np.savetxt(src, np.c_[np.arange(acc.size) / FS, acc], delimiter=",", fmt="%.17g")
-    data, note = load_signal(src)
-    np.testing.assert_array_equal(data, acc)
+    opened = open_signal(src, build_registry().signal_readers(), rate_hz=FS)
+    np.testing.assert_array_equal(opened.read_g(), [acc])
+    note = opened.info.note
     assert note is not None and "column 1 read as time" in note
     manifest = tmp_path / "m.csv"
     manifest.write_text(

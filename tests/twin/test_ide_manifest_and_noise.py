@@ -46,7 +46,7 @@ def test_validate_noise_reads_the_parts_channel_of_an_ide_file(sdt_main):
         "--recording", str(DATA / "SSX_Data.IDE"), "--windows", "4", "--json",
     )  # fmt: skip
     assert code == 0, err
-    assert "channel 32 axis z, 8580 samples" in err
+    assert "signal '32:z': 8,580 samples at 3134.31 Hz (its timestamps)" in err
     data = json.loads(out)
     assert data["recording"]["fs_hz"] == read_ide(DATA / "SSX_Data.IDE", 32, ["z"]).rate_hz
 

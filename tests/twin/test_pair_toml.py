@@ -53,7 +53,7 @@ part = "ADXL345"
 
 def test_toml_pair_checks_like_the_ide_file(written, registry):
     ide, folder = written
-    pair = load_pair(folder / "pair.toml", "adxl345")
+    pair = load_pair(folder / "pair.toml", "adxl345", readers=registry.signal_readers())
     assert pair.reference.axes == ("x", "y", "z")
     assert pair.reference.rate_hz == pytest.approx(ide.reference.rate_hz, rel=1e-9)
     assert np.allclose(pair.reference.values, ide.reference.values, rtol=1e-8, atol=1e-9)
@@ -69,7 +69,7 @@ def test_toml_pair_checks_like_the_ide_file(written, registry):
 @pytest.mark.parametrize(
     ("edit", "words"),
     [
-        (('time_column = "t"', ""), "give exactly one of rate_hz or time_column"),
+        (('time_column = "t"', ""), "[reference] a CSV holds no rate; give rate_hz or time_column"),
         (('units = "m/s^2"', 'units = "furlong"'), "field 'reference.units'"),
         (('part = "832M1"', 'colour = "red"'), "field 'reference.colour': unknown field"),
         (('file = "mems.npy"', 'file = "missing.npy"'), "[device] file not found"),
@@ -103,7 +103,7 @@ def test_a_pair_without_motion_says_why_nothing_is_judged(tmp_path, sdt_main):
     assert len(lines) == 1 and "no band can be judged" in lines[0] and "floor" in lines[0], err
 
 
-def test_the_reference_csv_is_read_once_for_its_columns_and_time(written, monkeypatch):
+def test_the_reference_csv_is_read_once_for_its_columns_and_time(written, monkeypatch, registry):
     # three signal columns and a time column: one parse of the file, not four
     from sdt_framework.data import csv_signal
 
@@ -116,7 +116,7 @@ def test_the_reference_csv_is_read_once_for_its_columns_and_time(written, monkey
 
     monkeypatch.setattr(csv_signal, "_parse", counting)
     _, folder = written
-    pair = load_pair(folder / "pair.toml", "adxl345")
+    pair = load_pair(folder / "pair.toml", "adxl345", readers=registry.signal_readers())
     assert [p.name for p in parsed] == ["piezo.csv"]
     # the columns come back in the order the pair names them, against numpy's own read
     table = np.loadtxt(folder / "piezo.csv", delimiter=",", skiprows=1)
