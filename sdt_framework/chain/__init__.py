@@ -19,6 +19,9 @@ ChainInputError, ChainInputTypeError
 band_fate(sensor, fs, band), chain_gain(sensor, fs, freqs), BandFate
     Whether content in a band reaches the output passed, attenuated or aliased
     (folded below the output Nyquist), and the gain line by line.
+passband(sensor, fs), Passband
+    The top of the band the chain passes (its lowest corner or Nyquist) and what
+    sets it, so that every band a figure or check measures stays inside it.
 simulation_problem(sensor, fs)
     Why a recording at fs Hz is too slow to simulate a sensor (None if it is not).
 """
@@ -30,6 +33,7 @@ from typing import TYPE_CHECKING
 from ..lazy import lazy_exports
 
 if TYPE_CHECKING:
+    from .bandwidth import Passband, passband
     from .chain import Chain, build_stages, compile_chain, degrade
     from .checks import ChainInputError, ChainInputTypeError
     from .filters import design_lowpass, is_skipped, lowpass_gain
@@ -59,6 +63,8 @@ _WHERE = {
     "is_skipped": "filters",
     "lowpass_gain": "filters",
     "simulation_problem": "simulable",
+    "Passband": "bandwidth",
+    "passband": "bandwidth",
     "BandFate": "response",
     "band_fate": "response",
     "chain_gain": "response",
@@ -78,6 +84,7 @@ __all__ = [
     "ChainInputError",
     "ChainInputTypeError",
     "LowPass",
+    "Passband",
     "Quantise",
     "RunContext",
     "SameRate",
@@ -92,6 +99,7 @@ __all__ = [
     "design_lowpass",
     "is_skipped",
     "lowpass_gain",
+    "passband",
     "sample_grid",
     "simulation_problem",
 ]

@@ -8,7 +8,7 @@ from typing import Annotated, Any
 import typer
 
 from ..errors import SDTError
-from .common import console, print_json, print_table, registry
+from .common import console, print_json, print_table, registry, warn
 from .guards import OVERWRITE_HELP
 
 __all__ = ["FS_HELP", "FULL_SCALE_HELP", "SIGNAL_HELP", "degrade_command",
@@ -133,6 +133,9 @@ def _print_table(data: dict[str, Any]) -> None:
             row += [f"{data['relative_error_pct'][short]:.2f}", _p(data["p_value"][short])]
         table.add_row(*row)
     print_table(table)
+    if data.get("band_note"):  # the chain passes less than 10-1500 Hz: NSD read where it passes
+        band = data["band_hz"]
+        warn(f"NSD read over {band[0]:g}-{band[1]:.0f} Hz: {data['band_note']}")
 
 
 def validate_noise_command(
@@ -191,9 +194,10 @@ def validate_noise_command(
 
     The chain runs on x_ref = 0 at --reference-fs; its output is cut into
     --windows windows of --window-length samples; per window: RMS (mean
-    removed, mg) and NSD (sqrt of the mean Welch PSD over 10..1500 Hz,
-    µg/√Hz). With --recording (read by its registered reader: the rate and
-    units from the file where it holds them; --fs, --unit where it does not)
+    removed, mg) and NSD (sqrt of the mean Welch PSD over 10..1500 Hz cut to
+    the band the chain passes, said in a note when cut, µg/√Hz). With
+    --recording (read by its registered reader: the rate and units from the
+    file where it holds them; --fs, --unit where it does not)
     the same statistics of the recording, the relative error and Welch
     t-test p-values are added. An Allan table reads
     the white-noise density N (and VRW) and the bias instability B off the

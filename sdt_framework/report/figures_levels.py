@@ -25,8 +25,8 @@ from dataclasses import dataclass
 import numpy as np
 from matplotlib.figure import Figure
 
+from ..chain import Passband
 from ..severity import asd
-from .passband import Passband
 from .signals import SensorTrace
 from .style import figure_label, new_figure
 

@@ -27,6 +27,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure as MplFigure
 
+from ..chain import passband
 from ..data.synth_model import MACHINES
 from ..errors import SDTError
 from ..labels import slug
@@ -42,7 +43,6 @@ from ..severity import (
 from .document import Block, Figure, Heading, Paragraph, literal
 from .figures_levels import MAX_TESTS, Level, levels_figure
 from .load import ResultsFolder
-from .passband import passband
 from .resonance import EnvelopeContent, envelope_content, excited_band
 from .signals import SensorTrace, degrade_all, open_config_dataset
 from .style import figure_label, new_figure, save_figure

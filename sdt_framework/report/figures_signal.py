@@ -122,7 +122,7 @@ def plot_noise(noise: Sequence[BandNoise], colors: dict[str, str]) -> Figure:
             n.check.sensor,
             n.check.sdt_signal,
             n.check.sdt_fs,
-            n.stats,
+            n.check.sdt,
             colors.get(n.check.sensor),
             LINESTYLES[i % len(LINESTYLES)],
         )
@@ -131,7 +131,7 @@ def plot_noise(noise: Sequence[BandNoise], colors: dict[str, str]) -> Figure:
     if len({(c.window_length, c.n_windows) for c in checks}) > 1:
         raise ValueError("noise checks with different windowing cannot share one figure")
     if checks:
-        draw_noise(ax_t, ax_f, series, checks[0], bands=[n.band_hz for n in noise])
+        draw_noise(ax_t, ax_f, series, checks[0], bands=[n.check.band_hz for n in noise])
     ax_t.set_title("(a) zero-motion noise (SDT, x_ref = 0)")
     ax_f.set_title("(b) ASD; each NSD dashed over the band its chain passes")
     return fig

@@ -21,8 +21,6 @@ from ..data.open import open_dataset
 from ..data.recording import Recording
 from ..specs import SensorSpec
 from ..validation import NoiseCheck, noise_check
-from ..validation.noise_check import BAND_HZ, WindowStats, window_stats
-from .passband import passband
 
 __all__ = [
     "BandNoise",
@@ -82,26 +80,20 @@ def degrade_all(
 
 @dataclass(frozen=True)
 class BandNoise:
-    """A zero-motion check with its NSD read over the band the sensor's chain passes.
-
-    ``band_hz`` is the check's 10-1500 Hz band cut to the chain's bandwidth
-    (:func:`~.passband.passband`), ``note`` says so when it was cut, and
-    ``configured`` is the profile's noise density (µg/√Hz) to read it against.
-    """
+    """A zero-motion check (its NSD read over the band the chain passes, ``check.band_hz``)
+    and the profile's noise density (µg/√Hz) to read it against."""
 
     check: NoiseCheck
-    band_hz: tuple[float, float]
-    stats: WindowStats
-    note: str
     configured: float
 
     def caption(self) -> str:
         """``sensor: RMS .. mg, NSD .. µg/√Hz over lo-hi Hz (configured ..; note)``."""
-        band = f"{self.band_hz[0]:g}-{self.band_hz[1]:.0f} Hz"
-        extra = "; ".join(t for t in (f"configured {self.configured:g}", self.note) if t)
+        check = self.check
+        band = f"{check.band_hz[0]:g}-{check.band_hz[1]:.0f} Hz"
+        extra = "; ".join(t for t in (f"configured {self.configured:g}", check.band_note) if t)
         return (
-            f"{self.check.sensor}: RMS {self.stats.rms_mg.mean():.2f} mg, "
-            f"NSD {self.stats.nsd_ug_rthz.mean():.1f} µg/√Hz over {band} ({extra})"
+            f"{check.sensor}: RMS {check.sdt.rms_mg.mean():.2f} mg, "
+            f"NSD {check.sdt.nsd_ug_rthz.mean():.1f} µg/√Hz over {band} ({extra})"
         )
 
 
@@ -112,16 +104,8 @@ def noise_checks(sensors: list[SensorSpec], seed: int = 0) -> list[BandNoise]:
     chain passes: above its bandwidth the output is the filter's skirt (or the
     quantiser's floor), not the part's noise.
     """
-    out = []
-    for spec in sensors:
-        if not spec.inject_noise:
-            continue
-        check = noise_check(spec, seed=seed)
-        limit = passband(spec, check.fs_ref)
-        band = limit.clip(BAND_HZ) or BAND_HZ
-        stats = window_stats(
-            check.sdt_signal, check.sdt_fs, check.n_windows, check.window_length, band
-        )
-        configured = float(spec.noise_density_ug_rthz)
-        out.append(BandNoise(check, band, stats, limit.note(BAND_HZ), configured))
-    return out
+    return [
+        BandNoise(noise_check(spec, seed=seed), float(spec.noise_density_ug_rthz))
+        for spec in sensors
+        if spec.inject_noise
+    ]

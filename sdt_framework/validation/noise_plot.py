@@ -15,7 +15,7 @@ import numpy as np
 from scipy import signal
 
 from ..io import atomic_path
-from .noise_check import BAND_HZ, NoiseCheck, WindowStats
+from .noise_check import NoiseCheck, WindowStats
 
 if TYPE_CHECKING:
     from .allan_check import AllanCheck
@@ -54,7 +54,7 @@ def draw_noise(
     Shared by ``sdt validate-noise --plot`` and the report's Fig. 4, so both show
     the statistics the same way: the first ``check.window_length`` samples
     (mean removed, at most 50 ms), the Welch ASD with ``nperseg = window_length``
-    over the ``check.n_windows`` windows, the 10..1500 Hz NSD band shaded and
+    over the ``check.n_windows`` windows, the NSD band (``check.band_hz``) shaded and
     each mean NSD dashed. With ``bands`` (one per series, the band its NSD was
     measured over) each mean NSD is dashed over its own band only and no band
     is shaded: the report's Fig. 4 clips each band to what the chain passes.
@@ -88,7 +88,8 @@ def draw_noise(
         else:
             ax_f.hlines(nsd, *bands[i], color=colour, ls="--", lw=1.2)
     if bands is None:
-        ax_f.axvspan(*BAND_HZ, color="0.92", zorder=0, label="NSD band 10–1500 Hz")
+        lo, hi = check.band_hz
+        ax_f.axvspan(lo, hi, color="0.92", zorder=0, label=f"NSD band {lo:g}–{hi:.0f} Hz")
     ax_t.set(xlabel="time, ms", ylabel="acceleration, mg")
     ax_f.set(xlabel="frequency, Hz", ylabel="ASD, µg/√Hz", title="(b) amplitude spectral density")
     for ax, where in ((ax_t, "upper right"), (ax_f, "lower left")):

@@ -41,10 +41,10 @@ def _butterworth_mean_power(order: int, cutoff: float, band: tuple[float, float]
 def test_fig4_nsd_of_a_narrow_chain_is_read_under_its_bandwidth(tmp_path) -> None:
     (noise,) = noise_checks([LIS3DH_HR], seed=0)
     top = 1344 / 9
-    assert noise.band_hz == pytest.approx((10.0, top))
+    assert noise.check.band_hz == pytest.approx((10.0, top))
     # independent: white noise of 220 µg/√Hz through the 8th-order low-pass, mean power in band
     expected = 220 * np.sqrt(_butterworth_mean_power(8, top, (10.0, top)))
-    measured = float(noise.stats.nsd_ug_rthz.mean())
+    measured = float(noise.check.sdt.nsd_ug_rthz.mean())
     assert measured == pytest.approx(expected, rel=0.06)  # 8 windows: ~3 % scatter
     # and recomputed from the zero-motion output with scipy's Welch over the same band
     windows = noise.check.sdt_signal[: 8 * 2048].reshape(8, 2048)
@@ -68,5 +68,36 @@ def test_fig4_nsd_of_a_narrow_chain_is_read_under_its_bandwidth(tmp_path) -> Non
 
 def test_fig4_keeps_the_whole_band_where_the_chain_passes_it(registry) -> None:
     (noise,) = noise_checks([registry.sensor("adxl345")], seed=0)
-    assert noise.band_hz == (10.0, 1500.0) and noise.note == ""
+    assert noise.check.band_hz == (10.0, 1500.0) and noise.check.band_note == ""
     assert "over 10-1500 Hz (configured 290)" in noise.caption()
+
+
+def test_validate_noise_reads_the_nsd_where_the_chain_passes(tmp_path) -> None:
+    """``sdt validate-noise`` and its JSON read the same band as Fig. 4 (one mechanism,
+    :func:`sdt_framework.chain.passband`), and say so in one warning line."""
+    import json
+
+    from typer.testing import CliRunner
+
+    from sdt_framework.cli.main import app
+
+    toml = tmp_path / "lis3dh-hr.toml"
+    toml.write_text(
+        'name = "lis3dh-hr"\nsampling_rate_hz = 1344\nfull_scale_g = 2\nadc_bits = 12\n'
+        "noise_density_ug_rthz = 220\nmech_cutoff_hz = 5000\nanalog_cutoff_hz = 672\n"
+        f"digital_cutoff_hz = {1344 / 9!r}\ndigital_order = 8\n",
+        encoding="utf-8",
+    )
+    base = ["--sensor-file", str(toml), "validate-noise", "--sensor", "lis3dh-hr"]
+    result = CliRunner().invoke(app, [*base, "--json"])
+    assert result.exit_code == 0, result.output
+    data = json.loads(result.stdout)
+    top = 1344 / 9
+    assert data["band_hz"] == pytest.approx([10.0, top])
+    expected = 220 * np.sqrt(_butterworth_mean_power(8, top, (10.0, top)))
+    assert data["sdt"]["nsd_ug_rthz"] == pytest.approx(expected, rel=0.06)
+    text = CliRunner().invoke(app, base)
+    assert (
+        "warning: NSD read over 10-149 Hz: 10-1500 Hz clipped to 10-149 Hz by its 149 Hz "
+        "digital low-pass"
+    ) in " ".join(text.output.split())

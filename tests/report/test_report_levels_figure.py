@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 from scipy import signal
 
+from sdt_framework.chain import Passband
 from sdt_framework.report.figures_levels import Level, levels_figure
-from sdt_framework.report.passband import Passband
 from sdt_framework.report.signals import SensorTrace
 from sdt_framework.report.style import save_figure, sensor_colors
 
