@@ -84,6 +84,13 @@ def _load(path: Path) -> dict[Any, Any]:
         raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
     except Exception as exc:  # lvm_read raises ValueError, KeyError, SyntaxError on bad headers
         raise DataFileError(_unparsed(path, exc)) from None
+    for s in range(int(lvm["Segments"])):  # every named column in the array, rows or not
+        width = len(lvm[s].get("Channel names", []))
+        data = np.asarray(lvm[s]["data"], dtype=np.float64)
+        data = data[:, :width] if data.ndim == 2 else np.empty((0, width))
+        if data.shape[1] < width:
+            data = np.pad(data, ((0, 0), (0, width - data.shape[1])), constant_values=np.nan)
+        lvm[s]["data"] = data
     return lvm
 
 
@@ -106,6 +113,12 @@ def _unparsed(path: Path, exc: Exception) -> str:
     found = _bad_header_value(path)
     if found:
         return found
+    if isinstance(exc, KeyError) and exc.args == ("data",):
+        return (
+            f"{path}: no column-name row: LabVIEW begins each segment's data with a row whose "
+            f"first cell is 'X_Value', and lvm_read finds none (a file written by another "
+            f"program, or edited); add that row, or export the file again from LabVIEW"
+        )
     message = _AST_OBJECT.sub("a value that is not a number", str(exc))
     return f"{path}: not a readable LVM file (lvm_read: {brief(ValueError(message))})"
 
@@ -181,7 +194,7 @@ def _signals(path: Path, lvm: dict[Any, Any]) -> list[tuple[SignalInfo, list[Cha
     """Every channel: its signal, and its column in each segment."""
     printed = _printed_deltas(path)
     tables = [segment_channels(lvm, s, printed) for s in range(int(lvm["Segments"]))]
-    data = [np.atleast_2d(lvm[s]["data"]) for s in range(len(tables))]
+    data = [lvm[s]["data"] for s in range(len(tables))]
     counts = Counter(ch.name for ch in tables[0])
     infos, columns = [], []
     for first in tables[0]:
@@ -219,7 +232,7 @@ def read(path: Path, variable: str | None) -> np.ndarray:
     info = pick(path, [i for i, _ in signals], variable)
     found = next(columns for i, columns in signals if i.variable == info.variable)
     rows = [
-        np.atleast_2d(lvm[s]["data"])[: ch.length, ch.column]
+        lvm[s]["data"][: ch.length, ch.column]
         for s, ch in enumerate(found)
         if ch is not None  # a channel missing from a segment has a fault: pick refused it
     ]

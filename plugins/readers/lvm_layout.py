@@ -102,13 +102,11 @@ def segment_channels(lvm: dict[Any, Any], s: int, printed: list[str]) -> list[Ch
     names = list(segment.get("Channel names", []))
     if names[-1:] == ["Comment"]:
         names.pop()
-    data = np.atleast_2d(np.asarray(segment["data"], dtype=np.float64))
-    if data.size == 0:
-        data = np.empty((0, len(names)))
+    data = segment["data"]  # (rows, one column a name), as the reader's _load leaves it
     first_delta = None
     found = []
     for column, name in enumerate(names):
-        values = data[:, column] if column < data.shape[1] else np.full(len(data), np.nan)
+        values = data[:, column]
         if name == "X_Value" or (not name.strip() and np.isnan(values).all()):
             continue  # an X column, or the empty cell after a trailing separator
         cell = column - offset

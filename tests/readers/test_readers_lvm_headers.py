@@ -196,3 +196,18 @@ def test_two_columns_of_one_name_are_refused_not_one_dropped(tmp_path):
     file.write_text(lvm_text([same_name]), encoding="utf-8")
     with pytest.raises(DataFileError, match="2 columns are named 'acc'; rename them"):
         read_signal(Path(file), "acc")
+
+
+def test_a_column_name_row_without_x_value_is_named(sdt_main, tmp_path):
+    """ARTS-Lab's Dataset-7 files name their columns ',time,excitation_vibration,...' (no
+    'X_Value', which lvm_read looks for): main said `not a readable LVM file (lvm_read: 'data')`."""
+    text = lvm_text([[Channel("acc", _values(64), 5e-5)]], layout="One")
+    file = tmp_path / "rec.lvm"
+    file.write_text(text.replace("X_Value\tacc\tComment", "\tacc\tComment"), encoding="utf-8")
+    code, _, err = sdt_main("dataset", "inspect", str(file))
+    assert code == 2
+    assert _one_error_line(err) == (
+        f"error: {file}: no column-name row: LabVIEW begins each segment's data with a row whose "
+        f"first cell is 'X_Value', and lvm_read finds none (a file written by another program, "
+        f"or edited); add that row, or export the file again from LabVIEW"
+    )

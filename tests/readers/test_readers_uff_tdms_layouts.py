@@ -64,6 +64,7 @@ def _psd(label: str | None) -> dict:
          "time response (type 1); export the time history)"),
         (None, "2 signals skipped: not an acceleration unit ('g\ufffd/Hz': 2), in 2 files"),
     ],
+    ids=["no-units", "as-exported"],
 )  # fmt: skip
 def test_a_psd_beside_catman_time_histories_leaves_them_readable(sdt_main, tmp_path, label, note):
     """Two catman time histories, then a PSD appended by pyuff: the manifest holds both time
