@@ -25,6 +25,8 @@ import numpy as np
 
 CORPUS = Path(__file__).parents[1] / "data" / "readers" / "corpus"
 CATMAN = CORPUS / "pyuff-time-history-not-all-columns-filled.uff"
+#: pyuff's real PSD (VibControl): a file holding only it is refused, so it is not in the corpus
+PSD = CORPUS.parent / "sample_dataset58_psd.uff"
 
 FILE_HEADER = (
     "LabVIEW Measurement\t\nWriter_Version\t2\nReader_Version\t2\nSeparator\tTab\n"

@@ -24,7 +24,7 @@ import pytest
 from sdt_framework.data import open_synthetic
 from sdt_framework.data.signal_files import read_signal
 
-from .daq_files import CORPUS, Channel, catman_uff, lvm_text
+from .daq_files import PSD, Channel, catman_uff, lvm_text
 
 ARGS = ("--quick", "--sensors", "adxl345", "--classifiers", "lr", "--jobs", "1", "--no-report")
 #: LVM: each signal of a file is a channel of its own (two accelerometers at two rates);
@@ -37,7 +37,7 @@ G = 9.80665  # m/s² per g (CGPM 1901, standard gravity)
 def _campaign(root: Path, fmt: str) -> int:
     import pyuff
 
-    psd = {**pyuff.UFF(str(CORPUS / "pyuff-sample_dataset58_psd.uff")).read_sets(0),
+    psd = {**pyuff.UFF(str(PSD)).read_sets(0),
            "ordinate_axis_units_lab": "NONE"}  # fmt: skip
     count = 0
     for rec, data in open_synthetic(machines="Motor-2", duration=1.0, channels="ch1",

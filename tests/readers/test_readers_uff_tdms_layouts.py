@@ -20,7 +20,7 @@ import pytest
 from sdt_framework.data.recording import DataFileError
 from sdt_framework.data.signal_files import read_signal, scan_file
 
-from .daq_files import CATMAN, CORPUS, catman_uff
+from .daq_files import CATMAN, CORPUS, PSD, catman_uff
 
 
 def _one_error_line(err: str) -> str:
@@ -52,7 +52,7 @@ def _psd(label: str | None) -> dict:
     units label replaced by ``label`` where one is given."""
     import pyuff
 
-    psd = pyuff.UFF(str(CORPUS / "pyuff-sample_dataset58_psd.uff")).read_sets(0)
+    psd = pyuff.UFF(str(PSD)).read_sets(0)
     return psd if label is None else {**psd, "ordinate_axis_units_lab": label}
 
 
