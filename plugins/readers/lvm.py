@@ -9,31 +9,50 @@ Each channel is a signal named by its header name; its rate is
 ``1 / Delta_X``; its segments (a LabVIEW logging loop writes one per
 iteration) are its acquisitions and must be equally long, at one
 ``Delta_X`` and one ``Y_Unit_Label`` (a channel whose segments differ is
-refused naming the segment). A header cell is matched to its data column as
-LabVIEW writes them: one cell per data column after the first (``X_Columns``
-``One`` or ``Multi``), one per channel (``No``).
+refused naming the segment). Where each channel lies (its data column, its X
+column, its length), and whether its header describes its samples (its X
+column steps by its ``Delta_X``, its ``X_Dimension`` is ``Time``), is
+:mod:`sdt_plugins.readers.lvm_layout`'s; a channel it cannot read as it
+stands is listed with the reason (its ``fault``). A column with no name and
+no value (after a separator ending the column-name row) is no channel; two
+columns of one name are refused, as one could not be told from the other. A
+channel without a ``Y_Unit_Label`` carries a note: it is read in g.
 
 lvm_read parses the text in Python (about 6 MB/s, up to 18 bytes of memory
 per byte of file, measured below), so a file over :data:`LVM_MAX_BYTES` is
 refused before parsing (TDMS holds the same data in binary). A file cut short
 is refused: LabVIEW ends every line, so a last line without a line break is a
 value cut off (``0.330`` of ``0.330112``), and a segment holding fewer rows
-than its header's ``Samples`` lost its end. lvm_read turns a cell it cannot
+than a channel's ``Samples`` lost its end. lvm_read turns a cell it cannot
 parse into NaN (refused by name); a header field that is not a number is named
 with its line.
 """
 
 from __future__ import annotations
 
-import math
 import re
+from collections import Counter
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+from sdt_plugins.readers.lvm_layout import (
+    Channel,
+    segment_channels,
+    segments_fault,
+    spectrum_fault,
+    truncated_fault,
+    x_column_fault,
+)
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, finite, increment_rate, pick
+from sdt_framework.data.readers import (
+    SignalInfo,
+    finite,
+    increment_rate,
+    note_unstated_units,
+    pick,
+)
 from sdt_framework.data.recording import DataFileError
 from sdt_framework.data.signal_sizes import check_parse_size
 from sdt_framework.data.tokens import brief, quote
@@ -53,8 +72,6 @@ _ADVICE = (
 _EVALUATED = ("Channels", "Delta_X", "X0", "Samples")
 _AST_OBJECT = re.compile(r"<ast\.\w+ object at 0x[0-9a-fA-F]+>")
 
-Table = dict[str, tuple[int, Any, str | None]]  # channel -> (data column, Delta_X, units)
-
 
 def _load(path: Path) -> dict[Any, Any]:
     import lvm_read
@@ -67,7 +84,13 @@ def _load(path: Path) -> dict[Any, Any]:
         raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
     except Exception as exc:  # lvm_read raises ValueError, KeyError, SyntaxError on bad headers
         raise DataFileError(_unparsed(path, exc)) from None
-    _require_samples(path, lvm)
+    for s in range(int(lvm["Segments"])):  # every named column in the array, rows or not
+        width = len(lvm[s].get("Channel names", []))
+        data = np.asarray(lvm[s]["data"], dtype=np.float64)
+        data = data[:, :width] if data.ndim == 2 else np.empty((0, width))
+        if data.shape[1] < width:
+            data = np.pad(data, ((0, 0), (0, width - data.shape[1])), constant_values=np.nan)
+        lvm[s]["data"] = data
     return lvm
 
 
@@ -85,24 +108,17 @@ def _require_last_line(path: Path, size: int) -> None:
         )
 
 
-def _require_samples(path: Path, lvm: dict[Any, Any]) -> None:
-    """A segment holding fewer rows than its header's ``Samples`` lost its end."""
-    for s in range(int(lvm["Segments"])):
-        rows = len(lvm[s]["data"])
-        declared = [v for v in lvm[s].get("Samples", []) if isinstance(v, (int, float))]
-        declared = [v for v in declared if math.isfinite(v)]
-        if declared and rows < max(declared):
-            raise DataFileError(
-                f"{path}: truncated: segment {s + 1} holds {rows:,} rows, its header's Samples "
-                f"says {int(max(declared)):,}; the file was cut short; copy it again"
-            )
-
-
 def _unparsed(path: Path, exc: Exception) -> str:
     """The header field that is not a number, with its line; else lvm_read's message."""
     found = _bad_header_value(path)
     if found:
         return found
+    if isinstance(exc, KeyError) and exc.args == ("data",):
+        return (
+            f"{path}: no column-name row: LabVIEW begins each segment's data with a row whose "
+            f"first cell is 'X_Value', and lvm_read finds none (a file written by another "
+            f"program, or edited); add that row, or export the file again from LabVIEW"
+        )
     message = _AST_OBJECT.sub("a value that is not a number", str(exc))
     return f"{path}: not a readable LVM file (lvm_read: {brief(ValueError(message))})"
 
@@ -133,78 +149,75 @@ def _bad_header_value(path: Path) -> str | None:
     return None
 
 
-def _cell(values: Any, index: int) -> Any:
-    return values[index] if isinstance(values, list) and 0 <= index < len(values) else None
+def _separator(path: Path) -> str:
+    """The column separator, as lvm_read finds it (a ``Separator`` line in the first 21)."""
+    with open(path, encoding="utf8", errors="ignore") as handle:
+        for _, line in zip(range(22), handle, strict=False):
+            if line.startswith("Separator") and len(line.strip()) > 9:
+                return line.strip()[9]
+    return "\t"
 
 
-def _table(lvm: dict[Any, Any], s: int) -> Table:
-    """Every channel of segment ``s``: its data column, ``Delta_X`` and units."""
-    segment = lvm[s]
-    offset = 0 if str(lvm.get("X_Columns", "One")).strip() == "No" else 1
-    names = [n for n in segment.get("Channel names", []) if n != "Comment"]
-    table: Table = {}
-    for column, name in enumerate(names):
-        if name == "X_Value":
-            continue
-        units = str(_cell(segment.get("Y_Unit_Label"), column - offset) or "").strip() or None
-        table.setdefault(name, (column, _cell(segment.get("Delta_X"), column - offset), units))
-    return table
+def _printed_deltas(path: Path) -> list[str]:
+    """The first segment's ``Delta_X`` cells as written (their digits are their precision)."""
+    separator = _separator(path)
+    with open(path, encoding="utf8", errors="ignore") as handle:
+        for line in handle:
+            cells = line.rstrip("\r\n").split(separator)
+            if cells[0] == "Delta_X":
+                return cells[1:]
+            if cells[0] == "X_Value":
+                break
+    return []
 
 
-def _same(a: Any, b: Any) -> bool:
-    if isinstance(a, (int, float)) and isinstance(b, (int, float)):
-        return (math.isnan(a) and math.isnan(b)) or math.isclose(a, b, rel_tol=1e-9)
-    return bool(a == b)
-
-
-def _segment_fault(path: Path, name: str, tables: list[Table]) -> str | None:
-    """Why channel ``name``'s segments are not acquisitions of one signal, or None."""
-    _, delta, units = tables[0][name]
-    for k, table in enumerate(tables[1:], start=2):
-        if name not in table:
-            return f"{path}: channel {quote(name)} is missing from segment {k}"
-        _, other, other_units = table[name]
-        if not _same(delta, other):
-            return (
-                f"{path}: channel {quote(name)} has Delta_X {delta!r} s in segment 1 and "
-                f"{other!r} s in segment {k}: its segments, read as acquisitions, are not at "
-                f"one rate; split the file at segment {k}"
-            )
-        if units != other_units:
-            return (
-                f"{path}: channel {quote(name)} has Y_Unit_Label {quote(units or '')} in "
-                f"segment 1 and {quote(other_units or '')} in segment {k}; split the file at "
-                f"segment {k}"
-            )
-    return None
-
-
-def _segments(path: Path, lvm: dict[Any, Any]) -> list[np.ndarray]:
-    segments = [np.atleast_2d(lvm[s]["data"]) for s in range(int(lvm["Segments"]))]
-    lengths = {len(s) for s in segments}
-    if len(lengths) > 1:
-        raise DataFileError(
-            f"{path}: its {len(segments)} segments hold {sorted(lengths)} rows; a signal's "
-            f"acquisitions must be equally long"
+def _fault(path: Path, found: list[Channel | None], data: list[np.ndarray]) -> str | None:
+    """Why a channel (its column in each segment; None where a segment lacks it) cannot be
+    read as it stands: no name, not time, no rate, an X column or a row count its header
+    does not describe, segments that differ."""
+    first = found[0]
+    assert first is not None
+    if not first.name.strip():
+        return (
+            f"{path}: column {first.column + 1} holds values but has no name in the column-name "
+            f"row; name it (LabVIEW writes a name for every channel)"
         )
-    return segments
+    field = f"channel {quote(first.name)} Delta_X"
+    fault = spectrum_fault(path, first) or increment_rate(path, first.delta, field)[1]
+    for s, ch in enumerate(found):
+        if ch is not None and not fault:
+            fault = x_column_fault(path, ch, data[s], s) or truncated_fault(path, ch, s)
+    return fault or segments_fault(path, first.name, found)
 
 
-def _signals(path: Path, lvm: dict[Any, Any]) -> list[SignalInfo]:
-    segments = _segments(path, lvm)
-    tables = [_table(lvm, s) for s in range(len(segments))]
-    infos = []
-    for name, (_, delta, units) in tables[0].items():
-        rate, fault = increment_rate(path, delta, f"channel {quote(name)} Delta_X")
-        fault = fault or _segment_fault(path, name, tables)
-        infos.append(SignalInfo(name, len(segments), len(segments[0]), rate, units, "Delta_X",
-                                fault=fault))  # fmt: skip
-    return infos
+def _signals(path: Path, lvm: dict[Any, Any]) -> list[tuple[SignalInfo, list[Channel | None]]]:
+    """Every channel: its signal, and its column in each segment."""
+    printed = _printed_deltas(path)
+    tables = [segment_channels(lvm, s, printed) for s in range(int(lvm["Segments"]))]
+    data = [lvm[s]["data"] for s in range(len(tables))]
+    counts = Counter(ch.name for ch in tables[0])
+    infos, columns = [], []
+    for first in tables[0]:
+        if any(info.variable == first.name for info in infos):
+            continue  # a name given to several columns: listed once, refused below
+        found = [next((c for c in table if c.name == first.name), None) for table in tables]
+        fault = _fault(path, found, data)
+        if counts[first.name] > 1:
+            fault = (
+                f"{path}: {counts[first.name]} columns are named {quote(first.name)}; rename "
+                f"them so that each channel has its own name"
+            )
+        rate = increment_rate(path, first.delta, f"channel {quote(first.name)} Delta_X")[0]
+        infos.append(SignalInfo(first.name, len(tables), first.length, rate, first.units,
+                                "Delta_X", first.tolerance, fault=fault,
+                                units_field="Y_Unit_Label"))  # fmt: skip
+        columns.append(found)
+    return list(zip(note_unstated_units(path, infos), columns, strict=True))
 
 
 def scan(path: Path) -> list[SignalInfo]:
     """Every channel (the file is parsed in full: LVM is text)."""
-    return _signals(path, _load(path))
+    return [info for info, _ in _signals(path, _load(path))]
 
 
 def probe(path: Path, variable: str | None) -> SignalInfo:
@@ -215,11 +228,15 @@ def probe(path: Path, variable: str | None) -> SignalInfo:
 def read(path: Path, variable: str | None) -> np.ndarray:
     """float64 (n_segments, n_samples), all finite (a cell lvm_read could not parse is named)."""
     lvm = _load(path)
-    name = str(pick(path, _signals(path, lvm), variable).variable)
-    segments = _segments(path, lvm)
-    columns = [_table(lvm, s)[name][0] for s in range(len(segments))]
-    data = np.stack([s[:, c] for s, c in zip(segments, columns, strict=True)]).astype(np.float64)
-    return finite(path, np.ascontiguousarray(data), "row", 1)
+    signals = _signals(path, lvm)
+    info = pick(path, [i for i, _ in signals], variable)
+    found = next(columns for i, columns in signals if i.variable == info.variable)
+    rows = [
+        lvm[s]["data"][: ch.length, ch.column]
+        for s, ch in enumerate(found)
+        if ch is not None  # a channel missing from a segment has a fault: pick refused it
+    ]
+    return finite(path, np.ascontiguousarray(np.stack(rows), dtype=np.float64), "row", 1)
 
 
 @hookimpl

@@ -1,7 +1,11 @@
 """NI TDMS files (NI-DAQmx, LabVIEW, SignalExpress) through npTDMS.
 
-Each channel is a signal named ``GROUP/CHANNEL``. Its rate is ``1 /
-wf_increment`` and its units the ``unit_string`` property; samples are read
+Each channel is a signal named ``GROUP/CHANNEL`` (names may hold ``/``: NI
+loggers put dates in group names, so a channel is found by its two names,
+never by splitting the joined one). Its rate is ``1 / wf_increment`` and its
+units the ``unit_string`` property (a channel without one carries a note: it
+is read in g); a channel whose x axis is not time (``wf_xunit_string``
+``Hz``: a spectrum) is listed and refused. Samples are read
 scaled (npTDMS applies the file's ``NI_Scale`` chain, as NI's own software
 does), so a DAQmx channel scaled to g reads in g and one left in volts says
 ``Volts`` (refused by a manifest, which wants an acceleration). ``wf_start_time``
@@ -21,13 +25,21 @@ from __future__ import annotations
 
 import logging
 import math
+from collections import Counter
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, increment_rate, pick
+from sdt_framework.data.readers import (
+    SignalInfo,
+    as_acquisitions,
+    increment_rate,
+    note_unstated_units,
+    pick,
+)
 from sdt_framework.data.recording import DataFileError
 from sdt_framework.data.tokens import brief, quote
 from sdt_framework.errors import InternalError
@@ -140,18 +152,47 @@ def _changes(path: Path) -> dict[str, str]:
     return reader.changes
 
 
+#: characters of a channel's ``GROUP/CHANNEL`` quoted in a message: enough to tell channels
+#: whose group names share a long date prefix (``07/09/2012 06:58:23 PM - Digital Input - ...``)
+NAME_LIMIT = 100
+#: x-axis units (``wf_xunit_string``) of a time waveform; empty is npTDMS's and DAQmx's default
+TIME_UNITS = ("", "s", "sec", "second", "seconds")
+#: x-axis units of a spectrum (a frequency axis)
+FREQUENCY_UNITS = ("hz", "khz", "1/s")
+
+
+def _x_axis_fault(path: Path, variable: str, props: dict[str, Any]) -> str | None:
+    """Why a channel whose x axis is not time (a spectrum in Hz, a time in ms) is no signal."""
+    unit = str(props.get("wf_xunit_string", "")).strip()
+    xname = str(props.get("wf_xname", "")).strip()
+    what = f"{path}: channel {quote(variable, NAME_LIMIT)}"
+    if unit.lower() in FREQUENCY_UNITS or xname.lower() == "frequency":
+        field = f"wf_xunit_string is {quote(unit)}" if unit else f"wf_xname is {quote(xname)}"
+        return (
+            f"{what} is a spectrum, not a time signal: its {field} (its x axis is frequency); "
+            f"sdt reads time signals: log the time waveform, not its spectrum"
+        )
+    if unit.lower() not in TIME_UNITS:
+        return (
+            f"{what}: its wf_xunit_string is {quote(unit)}, not seconds; sdt reads wf_increment "
+            f"as a time step in seconds: write the waveform with its x axis in s"
+        )
+    return None
+
+
 def _info(path: Path, group, channel, changes: dict[str, str]) -> SignalInfo:
     props = channel.properties
     variable = f"{group.name}/{channel.name}"
+    name = quote(variable, NAME_LIMIT)
     rate, fault = None, None
     if "wf_increment" in props:
-        rate, fault = increment_rate(path, props["wf_increment"], f"channel {quote(variable)} "
-                                     "wf_increment")  # fmt: skip
+        rate, fault = increment_rate(path, props["wf_increment"], f"channel {name} wf_increment")
+    fault = _x_axis_fault(path, variable, props) or fault
     if channel.path in changes:
         fault = (
-            f"{path}: channel {quote(variable)} {changes[channel.path]}; npTDMS applies the "
-            f"last value to every sample, so the channel is not one record; split the file at "
-            f"that segment, or write one rate, unit and scale per channel"
+            f"{path}: channel {name} {changes[channel.path]}; npTDMS applies the last value to "
+            f"every sample, so the channel is not one record; split the file at that segment, "
+            f"or write one rate, unit and scale per channel"
         )
     start = props.get("wf_start_time")
     return SignalInfo(
@@ -163,13 +204,32 @@ def _info(path: Path, group, channel, changes: dict[str, str]) -> SignalInfo:
         "wf_increment" if rate else "",
         label=f"start {np.datetime_as_string(start, unit='s')}" if start is not None else "",
         fault=fault,
+        units_field="unit_string",
     )
+
+
+def _channels(path: Path) -> list[tuple[SignalInfo, str, str]]:
+    """(signal, group name, channel name) of every channel, from the metadata alone. Names may
+    hold '/' (NI loggers put dates in group names), so a channel is found by its two names,
+    never by splitting ``GROUP/CHANNEL``; two channels that join to one name are refused."""
+    tdms, changes = _load(path)
+    found = [(_info(path, g, c, changes), g.name, c.name) for g in tdms.groups()
+             for c in g.channels()]  # fmt: skip
+    joined = Counter(info.variable for info, _, _ in found)
+    infos = [
+        info if joined[info.variable] == 1 else replace(info, fault=(
+            f"{path}: {joined[info.variable]} channels are named "
+            f"{quote(info.variable, NAME_LIMIT)} (group and channel names joined by '/'); "
+            f"rename a group or a channel so that each GROUP/CHANNEL is one channel"))
+        for info, _, _ in found
+    ]  # fmt: skip
+    infos = note_unstated_units(path, infos)
+    return [(info, g, c) for info, (_, g, c) in zip(infos, found, strict=True)]
 
 
 def scan(path: Path) -> list[SignalInfo]:
     """Every channel, from the metadata alone."""
-    tdms, changes = _load(path)
-    return [_info(path, g, c, changes) for g in tdms.groups() for c in g.channels()]
+    return [info for info, _, _ in _channels(path)]
 
 
 def probe(path: Path, variable: str | None) -> SignalInfo:
@@ -179,8 +239,9 @@ def probe(path: Path, variable: str | None) -> SignalInfo:
 
 def read(path: Path, variable: str | None) -> np.ndarray:
     """float64 (1, n_samples), scaled, all finite; the length is checked against the metadata."""
-    info = probe(path, variable)
-    group, _, name = str(info.variable).partition("/")
+    channels = _channels(path)
+    info = pick(path, [i for i, _, _ in channels], variable)
+    group, name = next((g, c) for i, g, c in channels if i.variable == info.variable)
     data = _load(path, group, name)
     if len(data) != info.n_samples:
         raise DataFileError(

@@ -6,9 +6,12 @@ period), its ordinate units label. Each time response (function type 1) is a
 signal named by its position among the file's datasets 58 (``1``, ``2``...);
 its rate is ``1 / abscissa_inc``, which UFF stores with 6 significant digits,
 so a manifest rate may differ from it by :data:`UFF_RATE_TOLERANCE`. A
-spectrum, an FRF or unevenly spaced data is refused by name; so is a file
-that does not end with a dataset's closing ``-1`` line (a copy cut short:
-pyuff would silently read only the complete datasets before the cut).
+spectrum, an FRF, unevenly spaced data or a dataset pyuff cannot parse is
+listed and refused by name, and the file's time histories beside it read. A
+file that does not end with a dataset's closing ``-1`` line is refused (a copy
+cut short: pyuff would silently read only the complete datasets before the
+cut); HBM catman pads that line with spaces to 80 columns. A dataset without
+an ordinate units label carries a note: it is read in g.
 
 pyuff reads the whole file into memory (about 4 bytes per byte of file,
 measured below), so a file over :data:`UFF_MAX_BYTES`, or one whose parse
@@ -24,12 +27,20 @@ from typing import Any
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, increment_rate, pick
+from sdt_framework.data.readers import (
+    SignalInfo,
+    as_acquisitions,
+    increment_rate,
+    note_unstated_units,
+    pick,
+)
 from sdt_framework.data.recording import DataFileError
 from sdt_framework.data.signal_sizes import check_parse_size
 from sdt_framework.data.tokens import brief
 from sdt_framework.specs import ReaderSpec
 
+#: where dataset 58 states units (record 9, the ordinate axis units label)
+UNITS_FIELD = "ordinate_axis_units_lab"
 #: 6 significant digits of an increment (UFF's E13.5 field): 1/2 unit in the 6th digit
 UFF_RATE_TOLERANCE = 1e-5
 #: function types of UFF dataset 58 record 6 (Universal File Format, dataset 58)
@@ -41,19 +52,24 @@ UFF_MAX_BYTES = 1_000_000_000
 #: peak memory of pyuff per byte of file: measured 4.0 (ASCII, 40 MB) and 3.4 (binary 58b,
 #: 44 MB) with ``/usr/bin/time -v`` (2 vCPU, Python 3.11, pyuff 2.4), rounded up
 UFF_PARSE_BYTES_PER_BYTE = 5
+#: bytes at the end of a file searched for its closing ``-1``: a line of 80 columns (HBM catman
+#: pads the ``-1`` with spaces to 80) many times over, and the trailing blanks some tools add
+TAIL_BYTES = 4096
 
 
 def _ends_complete(path: Path) -> bool:
+    """The file's last line is a dataset's closing ``-1`` (catman pads it to 80 columns)."""
     size = path.stat().st_size
     with open(path, "rb") as handle:
-        handle.seek(max(0, size - 64))
+        handle.seek(max(0, size - TAIL_BYTES))
         tail = handle.read().rstrip()
     return tail.endswith(b"-1") and tail[:-2][-1:] in (b" ", b"\n", b"\r", b"")
 
 
 @functools.lru_cache(maxsize=1)  # scan, probe and read of one file parse it once
-def _sets(path: str, mtime_ns: int, size: int) -> tuple[tuple[int, ...], tuple[dict, ...]]:
-    """(every dataset type, the datasets 58) of a file, read once per version of it."""
+def _sets(path: str, mtime_ns: int, size: int) -> tuple[tuple[int, ...], tuple[dict | str, ...]]:
+    """(every dataset type, the datasets 58) of a file, read once per version of it; a dataset
+    pyuff cannot parse is the reason, a string."""
     import pyuff
 
     file = Path(path)
@@ -67,10 +83,9 @@ def _sets(path: str, mtime_ns: int, size: int) -> tuple[tuple[int, ...], tuple[d
     try:
         uff = pyuff.UFF(path)
         types = tuple(int(t) for t in uff.get_set_types())
-        index = [i for i, t in enumerate(types) if t == 58]
-        found = tuple(uff.read_sets(i) for i in index) if index else ()
     except Exception as exc:  # pyuff raises bare Exception on damaged datasets
         raise DataFileError(f"{file}: not a readable UFF file (pyuff: {brief(exc)})") from None
+    found = tuple(_one_set(uff, i) for i, t in enumerate(types) if t == 58)
     if not found:
         held = ", ".join(str(t) for t in sorted(set(types))) or "none"
         raise DataFileError(
@@ -80,7 +95,16 @@ def _sets(path: str, mtime_ns: int, size: int) -> tuple[tuple[int, ...], tuple[d
     return types, found
 
 
-def _datasets(path: Path) -> tuple[dict, ...]:
+def _one_set(uff: Any, index: int) -> dict | str:
+    """Dataset ``index``, or why pyuff cannot read it (one dataset it cannot parse, an FRF or
+    spectrum in a layout it does not know, does not keep the others from being read)."""
+    try:
+        return uff.read_sets(index)
+    except Exception as exc:  # pyuff wraps its parse error in a bare Exception
+        return f"pyuff cannot read it ({brief(exc.__context__ or exc)})"
+
+
+def _datasets(path: Path) -> tuple[dict | str, ...]:
     try:
         stat = path.stat()
     except OSError as exc:
@@ -93,31 +117,37 @@ def _units(item: dict[str, Any]) -> str | None:
     return None if label.upper() in ("", "NONE") else label
 
 
-def _info(path: Path, number: int, item: dict[str, Any]) -> SignalInfo:
+def _info(path: Path, number: int, item: dict[str, Any] | str) -> SignalInfo:
+    where = f"{path}: dataset 58 #{number}"
+    if isinstance(item, str):
+        return SignalInfo(str(number), 1, 0, fault=f"{where}: {item}; export it again",
+                          units_field=UNITS_FIELD)  # fmt: skip
     points = int(item.get("num_pts", 0))
-    if len(item["data"]) != points:
-        raise DataFileError(
-            f"{path}: dataset 58 #{number} declares {points:,} points and holds "
-            f"{len(item['data']):,}; the file is damaged"
-        )
     rate, fault = increment_rate(path, item.get("abscissa_inc"), f"dataset 58 #{number} "
                                  "abscissa_inc")  # fmt: skip
     kind = int(item.get("func_type", 0))
     if kind != 1:
         fault = (
-            f"{path}: dataset 58 #{number} is a {FUNCTION_TYPES.get(kind, f'type {kind}')} "
-            f"(function type {kind}), not a time response (type 1); export the time history"
+            f"{where} is a {FUNCTION_TYPES.get(kind, f'type {kind}')} (function type {kind}), "
+            f"not a time response (type 1); export the time history"
         )
     elif int(item.get("abscissa_spacing", 1)) != 1:
-        fault = f"{path}: dataset 58 #{number} is unevenly spaced; export it evenly"
+        fault = f"{where} is unevenly spaced; export it evenly"
+    elif len(item["data"]) != points:
+        fault = (
+            f"{where} declares {points:,} points and holds {len(item['data']):,}; the dataset "
+            f"is damaged; export it again"
+        )
     label = f"{item.get('id1', '')} node {item.get('rsp_node')} dir {item.get('rsp_dir')}"
     return SignalInfo(str(number), 1, points, rate, _units(item), "abscissa_inc",
-                      UFF_RATE_TOLERANCE, label.strip(), fault=fault)  # fmt: skip
+                      UFF_RATE_TOLERANCE, label.strip(), fault=fault,
+                      units_field=UNITS_FIELD)  # fmt: skip
 
 
 def scan(path: Path) -> list[SignalInfo]:
     """Every dataset 58, numbered from 1."""
-    return [_info(path, n, item) for n, item in enumerate(_datasets(path), start=1)]
+    infos = [_info(path, n, item) for n, item in enumerate(_datasets(path), start=1)]
+    return note_unstated_units(path, infos)
 
 
 def probe(path: Path, variable: str | None) -> SignalInfo:
@@ -128,7 +158,7 @@ def probe(path: Path, variable: str | None) -> SignalInfo:
 def read(path: Path, variable: str | None) -> np.ndarray:
     """float64 (1, n_samples), all finite."""
     info = probe(path, variable)
-    data = np.asarray(_datasets(path)[int(str(info.variable)) - 1]["data"])
+    data = np.asarray(_datasets(path)[int(str(info.variable)) - 1]["data"])  # type: ignore[index]
     return as_acquisitions(path, data)
 
 

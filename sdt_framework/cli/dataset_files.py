@@ -124,7 +124,10 @@ def manifest(
     {machine?}, {speed?}) may be missing, so healthy folders without a severity
     ('healthy' beside 'bearing 2', or 'healthy/run1' beside 'bearing/2/run1') read
     with one pattern; a severity of '-' is healthy too. A signal whose file gives a
-    unit that is not an acceleration (degC, V, Pa) is left out, counted in a note.
+    unit that is not an acceleration (degC, V, Pa) is left out, counted in a note;
+    so is one that cannot be read as it stands (a PSD beside a UFF file's time
+    histories, a 1 Hz channel), with the reason; one whose file leaves its units
+    empty (a TDMS channel without unit_string) is read in g, and a note says so.
     Linked folders are followed (loops are not); every file or folder not used (no
     match, no reader, a broken link, a FIFO) is listed with the reason.
 

@@ -17,7 +17,12 @@ tachometer in ``V``, a pressure in ``hPa`` beside the ``g`` channels. A
 signal whose file gives a unit that is not an acceleration is not put in the
 manifest (the reader would refuse the whole manifest for it); the channels so
 skipped are counted by unit in a note, and a file left with none is listed as
-not used. A signal whose file states no unit is taken, in g.
+not used. A signal whose file states no unit is taken, in g, and a note names
+it where its format has a units field it left empty (a TDMS channel without
+``unit_string``). A signal its reader lists but cannot read as it stands (an
+FRF or a spectrum beside a UFF file's time histories, a 1 Hz channel beside
+the accelerometers) is left out and counted in a note with the first reason;
+the file's other signals are written.
 
 Every entry of the tree is accounted for (:mod:`.manifest_walk`: linked
 folders followed, loops, broken links and FIFOs named): files that do not
@@ -41,7 +46,7 @@ from ..errors import SDTError
 from .manifest_ids import Matched, name_recordings
 from .manifest_pattern import compile_template
 from .manifest_walk import walk_tree
-from .readers import SignalInfo, acceleration_units
+from .readers import SignalInfo, acceleration_units, fault_of
 from .signal_files import scan_file
 from .tokens import quote
 
@@ -111,6 +116,31 @@ def _skipped_note(skipped: list[tuple[str, SignalInfo]]) -> list[str]:
     ]
 
 
+def _unread_notes(unreadable: list[tuple[str, SignalInfo, str]],
+                  unstated: list[tuple[str, SignalInfo]]) -> list[str]:  # fmt: skip
+    """Notes on the signals left out as unreadable, and on those read in g for want of units."""
+    notes = []
+    if unreadable:
+        where, info, why = unreadable[0]
+        notes.append(
+            f"{_count(len(unreadable), 'signal')} skipped: not readable as they stand, in "
+            f"{_count(len({w for w, _, _ in unreadable}), 'file')} (e.g. "
+            f"{quote(info.variable, 60)} in {where}: {why}); `sdt dataset inspect FILE` says why "
+            f"for each"
+        )
+    if unstated:
+        where, info = unstated[0]
+        fields = ", ".join(sorted({i.units_field for _, i in unstated}))
+        verb = "states" if len(unstated) == 1 else "state"
+        notes.append(
+            f"{_count(len(unstated), 'signal')} {verb} no units (their {fields} is empty), in "
+            f"{_count(len({w for w, _ in unstated}), 'file')} (e.g. {quote(info.variable, 60)} "
+            f"in {where}): written with units empty, which the manifest reads as g; give their "
+            f"units in the manifest's units column if they are not in g"
+        )
+    return notes
+
+
 def _count(n: int, noun: str) -> str:
     return f"{n} {noun}{'' if n == 1 else 's'}"
 
@@ -135,6 +165,7 @@ def build_manifest(
     tree = walk_tree(folder)
     matched: list[Matched] = []
     skipped: list[tuple[str, SignalInfo]] = []
+    unreadable: list[tuple[str, SignalInfo, str]] = []
     options = {"full_scale_g": full_scale_g} if full_scale_g is not None else {}
     for relative, file in tree.files:
         fields = compiled.match(relative.parts)
@@ -147,8 +178,11 @@ def build_manifest(
             if "full_scale_g" in reader.options:
                 infos = reader.scan(file, **options)
             other = [info for info in infos if _not_acceleration(info)]
-            infos = [info for info in infos if not _not_acceleration(info)]
+            faulty = [i for i in infos if not _not_acceleration(i) and fault_of(file, i)]
+            infos = [i for i in infos if not _not_acceleration(i) and not fault_of(file, i)]
             skipped += [(relative.as_posix(), info) for info in other]
+            unreadable += [(relative.as_posix(), i, str(fault_of(file, i)).removeprefix(
+                f"{file}: ")) for i in faulty]  # fmt: skip
             if "full_scale_g" in reader.options:
                 for info in infos:  # a probe refuses what the row could not read
                     reader.probe(file, info.variable, **options)
@@ -158,6 +192,8 @@ def build_manifest(
         if not infos:
             units = ", ".join(dict.fromkeys(quote(str(i.units).strip()) for i in other))
             why = f"no acceleration signal: its {_count(len(other), 'signal')} are in {units}"
+            if faulty:
+                why += f"; the {_count(len(faulty), 'other')} cannot be read as they stand"
             built.unmatched.append((relative.as_posix(), why))
             continue
         if rate_hz is None and any(info.rate_hz is None for info in infos):
@@ -169,6 +205,9 @@ def build_manifest(
     built.unmatched = sorted(built.unmatched + tree.left_out)
     built.notes = name_recordings(matched, template, "channel" in compiled.names)
     built.notes += _skipped_note(skipped)
+    unstated = [(m.where.as_posix(), i) for m in matched for i in m.infos
+                if i.units_stated is False]  # fmt: skip
+    built.notes += _unread_notes(unreadable, unstated)
     built.files = len(matched)
     built.rows = [
         _row(m, info, channel, out_dir, rate_hz)

@@ -21,7 +21,7 @@ it with that one line.
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -42,6 +42,7 @@ __all__ = [
     "finite",
     "increment_rate",
     "names",
+    "note_unstated_units",
     "orient",
     "pick",
     "rate_from_increment",
@@ -81,7 +82,11 @@ class SignalInfo:
     (``wf_increment``, ``Delta_X``, ``header``, ``timestamps``) and
     ``rate_tolerance`` the relative difference a manifest may have from it.
     ``fault`` is why the signal cannot be read as it stands (one line naming the
-    file and the field), None when it can.
+    file and the field), None when it can. ``units_field`` names the field a
+    format states units in (``unit_string``, ``Y_Unit_Label``), "" for a format
+    that has none (NPY, CSV, MAT): a signal with a ``units_field`` and no
+    ``units`` left that field empty (:attr:`units_stated` is False), and is
+    read in the manifest's units, g where it gives none.
     """
 
     variable: str | None
@@ -94,6 +99,12 @@ class SignalInfo:
     label: str = ""
     note: str | None = None
     fault: str | None = None
+    units_field: str = ""
+
+    @property
+    def units_stated(self) -> bool | None:
+        """Whether the file states this signal's units; None for a format that holds none."""
+        return None if not self.units_field else self.units is not None
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -107,7 +118,7 @@ class SignalInfo:
 
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready form, with the duration."""
-        return {**asdict(self), "duration_s": self.duration_s}
+        return {**asdict(self), "duration_s": self.duration_s, "units_stated": self.units_stated}
 
 
 def acceleration_units(units: str | None) -> str | None:
@@ -165,6 +176,26 @@ def fault_of(file: Path, info: SignalInfo) -> str | None:
         name = "its signal" if info.variable is None else f"signal {quote(info.variable)}"
         return f"{file}: {name} holds no samples (an empty recording); give a file with data"
     return None
+
+
+def note_unstated_units(file: Path, infos: list[SignalInfo]) -> list[SignalInfo]:
+    """``infos``, each readable signal whose file left its units field empty carrying one note
+    for the file that names them: they are read in the manifest's units, g where it gives none."""
+    unstated = [i for i in infos if i.units_stated is False and not i.fault]
+    if not unstated:
+        return infos
+    chosen, field = {id(i) for i in unstated}, unstated[0].units_field
+    which = ", ".join(quote(i.variable, 100) for i in unstated[:8])
+    which += f" and {len(unstated) - 8} more" if len(unstated) > 8 else ""
+    what = f"signal {which} states" if len(unstated) == 1 else f"signals {which} state"
+    note = (
+        f"{file}: {what} no units (its {field} is empty): read in the manifest's units, g "
+        f"where it gives none; check that they are"
+    )
+    return [
+        replace(i, note="; ".join(filter(None, (i.note, note)))) if id(i) in chosen else i
+        for i in infos
+    ]
 
 
 def names(found: list[str]) -> str:

@@ -72,11 +72,59 @@ def _mat73(file: Path, variable: str) -> tuple[float | None, np.ndarray]:
         return None, node[()]
 
 
+def _lvm(file: Path, variable: str) -> tuple[float | None, np.ndarray]:
+    """lvm_read: the channel's column in each segment (one a row), at 1 / its Delta_X cell (cell
+    c - 1 of data column c where the file has X columns, cell c where it has none); a column
+    empty below its Samples holds those Samples (a channel shorter than the others)."""
+    import lvm_read
+
+    lvm = lvm_read.read(str(file), read_from_pickle=False, dump_file=False)
+    offset = 0 if lvm["X_Columns"] == "No" else 1
+    rows, rates = [], set()
+    for s in range(lvm["Segments"]):
+        column = lvm[s]["Channel names"].index(variable)
+        values = lvm[s]["data"][:, column]
+        samples = lvm[s]["Samples"][column - offset]
+        if np.isfinite(samples) and np.isnan(values[int(samples) :]).all():
+            values = values[: int(samples)]
+        rows.append(values)
+        rates.add(1 / lvm[s]["Delta_X"][column - offset])
+    (rate,) = rates
+    return rate, np.stack(rows)
+
+
+def _uff58(file: Path, variable: str) -> tuple[float | None, np.ndarray]:
+    """pyuff: dataset 58 number ``variable`` (counting the file's datasets 58 from 1), at
+    1 / its abscissa increment."""
+    import pyuff
+
+    uff = pyuff.UFF(str(file))
+    index = [i for i, kind in enumerate(uff.get_set_types()) if kind == 58][int(variable) - 1]
+    dataset = uff.read_sets(index)
+    return 1 / dataset["abscissa_inc"], dataset["data"]
+
+
+def _tdms(file: Path, variable: str) -> tuple[float | None, np.ndarray]:
+    """npTDMS: the channel whose group and channel names joined by '/' are ``variable`` (either
+    may hold '/'), scaled, at 1 / its wf_increment."""
+    from nptdms import TdmsFile
+
+    tdms = TdmsFile.read(file)
+    (channel,) = [
+        c for g in tdms.groups() for c in g.channels() if f"{g.name}/{c.name}" == variable
+    ]
+    increment = channel.properties.get("wf_increment")
+    return (None if increment is None else 1 / increment), channel[:]
+
+
 #: reader name -> (file, variable) -> (the rate the library reads, or None; the samples)
 REFERENCES: dict[str, Callable[[Path, str], tuple[float | None, np.ndarray]]] = {
     "wav": _wav,
     "mat": _mat,
     "mat73": _mat73,
+    "lvm": _lvm,
+    "uff58": _uff58,
+    "tdms": _tdms,
 }
 
 
