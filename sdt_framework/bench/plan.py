@@ -96,7 +96,15 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
     dataset = _open(config, registry)
     recordings = everything = dataset.recordings()
     if not recordings:
-        raise SDTError(f"dataset {dataset.name!r} has no usable recordings")
+        left = dataset.skipped
+        first = left[0] if left else None
+        why = (
+            f": {len(left)} left out, first {first.path}: "
+            f"{first.reason.removeprefix(f'{first.path}: ')}"
+            if first
+            else ""
+        )
+        raise SDTError(f"dataset {dataset.name!r} has no usable recordings{why}")
     machines = _select(config.machines, {r.machine for r in recordings}, "machine(s)")
     channels = _select(config.channels, {r.channel for r in recordings}, "channel(s)")
     recordings = [r for r in recordings if r.machine in machines and r.channel in channels]

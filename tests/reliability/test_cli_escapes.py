@@ -9,8 +9,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
-
 from sdt_framework.cli.visible import visible
 
 ESC = "\x1b"
@@ -50,7 +48,7 @@ def test_a_sensor_description_cannot_drive_the_terminal(sdt_main, tmp_path):
 def test_a_manifest_path_cannot_drive_the_terminal(sdt_main, tmp_path):
     folder = tmp_path / f"d{ESC}[2J"
     folder.mkdir()
-    np.save(folder / "a.npy", np.zeros(10))
+    (folder / "a.npy").write_bytes(b"not an npy file")  # refused by its reader, named
     manifest = tmp_path / "m.csv"
     manifest.write_text(
         "path,sampling_rate_hz,machine,condition,severity,recording_id,channel\n"
