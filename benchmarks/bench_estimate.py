@@ -4,9 +4,11 @@ Measures, in this process and on one thread, the CPU time of featurising the
 ``--quick`` plan (seconds per million input samples per chain draw) and of
 every classifier run (least-squares ``a + b * n_train`` per classifier), prints
 those constants beside the ones in ``estimate.py``, then runs the ``--quick``
-benchmark (empty cache, ``--jobs 1``) and prints its estimated and measured
-wall time and their ratio. CPU time, not wall time, is used for the constants
-so that a busy machine does not inflate them. Usage:
+benchmark (empty cache, ``--jobs 1``) as ``sdt benchmark`` runs it
+(``bench.run_benchmark_folder``) and prints its estimated and measured wall
+time (from the folder's claim to its last output file) and their ratio. CPU
+time, not wall time, is used for the constants so that a busy machine does
+not inflate them. Usage:
 
     .venv/bin/python benchmarks/bench_estimate.py
 """
@@ -21,11 +23,12 @@ from pathlib import Path
 import numpy as np
 
 from sdt_framework import build_registry
-from sdt_framework.bench import runner
+from sdt_framework.bench import run_benchmark_folder, runner
 from sdt_framework.bench.classify import run_classifier
 from sdt_framework.bench.config import load_config
-from sdt_framework.bench.estimate import FEATURE_SECONDS_PER_MSAMPLE, RUN_SECONDS, estimate
+from sdt_framework.bench.estimate import FEATURE_SECONDS_PER_MSAMPLE, RUN_SECONDS
 from sdt_framework.bench.featurise import FeatureJob, featurise_recording
+from sdt_framework.bench.tasks import plan_tasks
 
 
 def main() -> None:
@@ -57,7 +60,7 @@ def main() -> None:
         )
         features = runner._feature_frame(plan, blocks)
         times: dict[str, list[tuple[int, float]]] = {}
-        for _, task in runner._tasks(plan, features, set()):
+        for _, task in plan_tasks(plan, features, set()):
             start = time.process_time()
             run_classifier(task)
             cpu = time.process_time() - start
@@ -71,11 +74,13 @@ def main() -> None:
         out = Path(tmp) / "out"
         config = load_config(None, {"quick": True, "jobs": 1, "report": False,
                                     "cache_dir": str(Path(tmp) / "cache")})  # fmt: skip
-        plan = runner.plan_benchmark(config, registry)
-        predicted = estimate(plan).seconds
-        start, start_cpu = time.perf_counter(), time.process_time()
-        runner.run_benchmark(plan, out)
-        measured, cpu = time.perf_counter() - start, time.process_time() - start_cpu
+        marks: list[float] = []
+
+        def started(plan, size) -> None:  # the folder is claimed: the run starts
+            marks.extend((time.perf_counter(), time.process_time()))
+
+        predicted = run_benchmark_folder(config, registry, out, started=started).size.seconds
+        measured, cpu = time.perf_counter() - marks[0], time.process_time() - marks[1]
         print(
             f"--quick --jobs 1: estimated {predicted:.1f} s; measured {measured:.1f} s wall "
             f"(ratio {predicted / measured:.2f}), {cpu:.1f} s CPU (ratio {predicted / cpu:.2f}; "

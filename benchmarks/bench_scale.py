@@ -78,9 +78,7 @@ class PeakMemory:
 
 def one(acquisitions: int, engine: str, workers: int, out: Path, cache: Path, repeats: int) -> dict:
     """Run the default protocol once in this process; return its measurements."""
-    from sdt_framework.bench.config import load_config
-    from sdt_framework.bench.output import write_outputs
-    from sdt_framework.bench.runner import plan_benchmark, run_benchmark
+    from sdt_framework.bench import load_config, run_benchmark_folder
     from sdt_framework.registry import build_registry
     from sdt_framework.report import write_report
 
@@ -93,20 +91,33 @@ def one(acquisitions: int, engine: str, workers: int, out: Path, cache: Path, re
         **({"repeats": repeats} if repeats else {}),
     }
     times: dict[str, float] = {}
+    marks: dict[str, float] = {}
+
+    def planned(plan) -> None:
+        marks["plan"] = time.perf_counter()
+
+    def progress(stage: str, done: int, total: int) -> None:  # the last call ends the runs
+        marks["ran"] = time.perf_counter()
+
+    def report(run) -> None:  # the outputs are written; the folder is still locked
+        marks["outputs"] = time.perf_counter()
+        write_report(out, registry=registry)
+        marks["report"] = time.perf_counter()
+
     with PeakMemory() as memory:
         start = time.perf_counter()
         registry = build_registry()
-        plan = plan_benchmark(load_config(None, overrides), registry)
-        times["plan"] = time.perf_counter() - start
-        result = run_benchmark(plan, out)
-        times |= result.seconds
-        mark = time.perf_counter()
-        results = write_outputs(result, out)
-        times["outputs"] = time.perf_counter() - mark
-        mark = time.perf_counter()
-        write_report(out, registry=registry)
-        times["report"] = time.perf_counter() - mark
+        config = load_config(None, overrides)
+        run = run_benchmark_folder(
+            config, registry, out, yes=True, progress=progress, check=planned, finish=report
+        )
         times["total"] = time.perf_counter() - start
+    result, results = run.result, run.results
+    times["plan"] = marks["plan"] - start
+    times |= result.seconds
+    # the serial tail: the pool's shutdown and the output files, then the report
+    times["outputs"] = marks["outputs"] - marks["ran"]
+    times["report"] = marks["report"] - marks["outputs"]
     results.drop(columns="fit_seconds").to_parquet(out / "compare.parquet")
     return {
         "times": times,

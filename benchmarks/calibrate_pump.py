@@ -1,8 +1,8 @@
 """Calibration of the synthetic pump against the paper's reference chain (Table 4, section 4).
 
 Runs the paper's pipeline on the default synthetic dataset exactly as ``sdt
-benchmark`` does (the package's ``load_config`` / ``plan_benchmark`` /
-``run_benchmark``): the reference sensor ``wilcoxon-786b10`` only, the paper8
+benchmark`` does (the package's ``load_config`` and ``run_benchmark_folder``,
+the main job as one call): the reference sensor ``wilcoxon-786b10`` only, the paper8
 features, every classifier (default: all five), the forward, backward and
 interpolation scenarios, once per generator seed (``dataset_options.seed``).
 For each machine and scenario it prints the Macro F1 (mean over classifiers and
@@ -31,10 +31,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from sdt_framework.bench.config import load_config
-from sdt_framework.bench.plan import plan_benchmark
-from sdt_framework.bench.results import tidy
-from sdt_framework.bench.runner import run_benchmark
+from sdt_framework.bench import load_config, run_benchmark_folder, tidy
 from sdt_framework.errors import SDTError
 from sdt_framework.registry import build_registry
 
@@ -76,9 +73,8 @@ def run_seed(
         options["classifiers"] = classifiers
     if channels:
         options["channels"] = channels
-    plan = plan_benchmark(load_config(None, options), build_registry())
-    result = run_benchmark(plan, where / f"seed{seed}-{'+'.join(channels or ['all'])}")
-    return tidy(result.runs)
+    out = where / f"seed{seed}-{'+'.join(channels or ['all'])}"
+    return tidy(run_benchmark_folder(load_config(None, options), build_registry(), out).result.runs)
 
 
 def channel_diagnostic(jobs: int, where: Path) -> pd.DataFrame:

@@ -38,7 +38,7 @@ ALLOWED: dict[str, set[str]] = {
     "arguments": {"dtypes", "errors", "specs"},
     "discovery": {"errors", "hookspecs"},
     "stages": {"errors", "seeding", "specs"},
-    "parts": {"errors", "specs", "toml_files"},
+    "parts": {"chain", "errors", "specs", "toml_files"},  # chain: search --simulable-at
     "sensor_files": {"errors", "specs", "toml_files"},
     "registry_lookup": {"discovery", "errors", "parts", "specs", "stages"},
     "registry": {

@@ -19,7 +19,6 @@ from rich.text import Text
 
 from .benchmark_table import print_table4
 from .common import console, err_console, registry, shorten_labels, warn
-from .progress import progress_bar
 
 EXIT_CLASSIFIER_FAILED = 1
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a process ended by Ctrl-C
@@ -220,76 +219,67 @@ def benchmark(
 
 
 def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: list[bool]) -> bool:
-    """Plan, check the size, run, write; True if some classifier failed in all its runs.
+    """The main job (:func:`~sdt_framework.bench.run_benchmark_folder`) with the terminal's
+    lines and the report; True if some classifier failed in all its runs.
 
     The results folder stays locked from its claim until the outputs and the report are
     written (:mod:`~sdt_framework.bench.folder_lock`).
     """
-    from ..bench.folder_lock import unlock_results_folder
-
-    try:
-        return _locked_run(ctx, config, out_dir, yes, claimed)
-    finally:
-        unlock_results_folder(out_dir)
-
-
-def _locked_run(
-    ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: list[bool]
-) -> bool:
-    """:func:`_run` once the names are known: everything from the plan to the summary."""
+    from ..bench import run_benchmark_folder
     from ..bench.estimate import ASSUMES
-    from ..bench.output import write_outputs
-    from ..bench.runner import plan_benchmark, preflight, run_benchmark
     from ..bench.saturation import saturation_lines, saturation_summary
     from .benchmark_notes import start_lines
-    from .planned import check_size, print_skipped
+    from .planned import print_skipped
+    from .progress import Bars
 
-    plan = plan_benchmark(config, registry(ctx))
-    if config.zones:  # the zone tables are checked before any run (severity figures)
-        from ..severity import assign_tables
+    reg = registry(ctx)
+    bars = Bars()
 
-        machines = sorted({r.machine for r in plan.recordings})
-        where, window_s = "[benchmark] zones", config.window_s
-        assign_tables(machines, configured=config.zones, where=where, window_s=window_s)
-    size = check_size(
-        plan,
-        out_dir,
-        yes,
-        "benchmark",
-        "lower --repeats or select fewer sensors, classifiers or machines",
-    )
-    preflight(plan, out_dir)
-    claimed.append(True)
-    print_skipped(plan)
+    def check(plan: Any) -> None:
+        if config.zones:  # the zone tables are checked before any run (severity figures)
+            from ..severity import assign_tables
+
+            machines = sorted({r.machine for r in plan.recordings})
+            where, window_s = "[benchmark] zones", config.window_s
+            assign_tables(machines, configured=config.zones, where=where, window_s=window_s)
+
+    def started(plan: Any, size: Any) -> None:
+        claimed.append(True)
+        print_skipped(plan)
+        console.print(
+            f"{plan.dataset.name}: {len(plan.recordings)} recordings, {len(plan.sensors)} "
+            f"sensors, {len(plan.classifiers)} classifiers, {len(config.scenarios)} scenarios, "
+            f"{config.repeats} repeats -> {out_dir}",
+            highlight=False,
+            soft_wrap=True,
+        )
+        _say("note:", "yellow", f"this benchmark is {size.line()} ({ASSUMES})")
+        for label, line in start_lines(plan, size):
+            _say(label, "yellow", line)
+
+    def finish(run: Any) -> None:
+        bars.close()
+        print_table4(run.results, [s.name for s in run.plan.sensors])
+        for line in saturation_lines(saturation_summary(run.result.saturation)):
+            warn(line)
+        if config.report:
+            from ..report import write_report  # the report layer sits above the benchmark
+
+            write_report(out_dir, registry=reg)
+
+    try:
+        run = run_benchmark_folder(
+            config, reg, out_dir, yes=yes, progress=bars, warn=warn, check=check,
+            started=started, finish=finish,
+        )  # fmt: skip
+    finally:
+        bars.close()
+    result = run.result
     console.print(
-        f"{plan.dataset.name}: {len(plan.recordings)} recordings, {len(plan.sensors)} sensors, "
-        f"{len(plan.classifiers)} classifiers, {len(config.scenarios)} scenarios, "
-        f"{config.repeats} repeats -> {out_dir}",
+        f"{len(run.results)} runs ({result.runs_computed} computed, {result.runs_resumed} "
+        f"resumed, {run.failed} failed) in {sum(result.seconds.values()):.0f} s; results in "
+        f"{out_dir}",
         highlight=False,
         soft_wrap=True,
     )
-    _say("note:", "yellow", f"this benchmark is {size.line()} ({ASSUMES})")
-    for label, line in start_lines(plan, size):
-        _say(label, "yellow", line)
-    from ..data.sizes import building
-
-    reduce = "process less data at once (shorter or fewer recordings, fewer --jobs)"
-    with building(f"running the benchmark ({size.line()})", reduce):
-        with progress_bar() as progress:
-            result = run_benchmark(plan, out_dir, progress, warn)
-        results = write_outputs(result, out_dir)
-    print_table4(results, [s.name for s in plan.sensors])
-    for line in saturation_lines(saturation_summary(result.saturation)):
-        warn(line)
-    if config.report:
-        from ..report import write_report  # the report layer sits above the benchmark
-
-        write_report(out_dir, registry=registry(ctx))
-    failed = int((results["status"] == "error").sum())
-    console.print(
-        f"{len(results)} runs ({result.runs_computed} computed, {result.runs_resumed} resumed, "
-        f"{failed} failed) in {sum(result.seconds.values()):.0f} s; results in {out_dir}",
-        highlight=False,
-        soft_wrap=True,
-    )
-    return _failures(results)
+    return _failures(run.results)

@@ -72,16 +72,6 @@ def _print_tables(comparison: Any) -> None:
         print_table(out)
 
 
-def _labels(folders: list[Any]) -> list[str]:
-    """Name each folder by what differs between them: feature set, dataset, else folder name."""
-    for column in ("feature_set", "dataset"):
-        values = [sorted(f.results[column].dropna().unique()) for f in folders]
-        if all(len(v) == 1 for v in values) and values[0] != values[1]:
-            return [v[0] for v in values]
-    names = [f.path.name for f in folders]
-    return names if names[0] != names[1] else [str(f.path) for f in folders]
-
-
 def _resume_command(folder: Any) -> str:
     """The command that rewrites every output file of ``folder`` from its stored runs."""
     root = folder.path
@@ -132,27 +122,6 @@ def _unpaired(comparison: Any) -> None:
         + "; ".join(named)
         + more
     )
-
-
-def _two_folders(folders: list[Any], baseline: str | None) -> tuple[dict[str, Any], Path]:
-    from ..verdict import stack_folders
-
-    labels = _labels(folders)
-    if baseline is not None and baseline not in labels:
-        raise SDTError(f"with two folders --baseline must be one of {labels}, got {baseline!r}")
-    records = [f.per_recording for f in folders]
-    per_recording = None
-    if all(r is not None for r in records):
-        per_recording = stack_folders(records, labels)
-    options = {
-        "results": stack_folders([f.results for f in folders], labels),
-        "baseline": baseline or labels[0],
-        "treatment": "source",
-        "cells": ["machine", "scenario", "sensor", "classifier"],
-        "per_recording": per_recording,
-        "allocation": folders[0].allocation,
-    }
-    return options, folders[1].path / f"comparison_vs_{folders[0].path.name}.csv"
 
 
 def compare(
@@ -232,7 +201,7 @@ def compare(
     from ..bench.results import write_frame
     from ..report.load import load_results
     from ..verdict import compare as run_compare
-    from ..verdict import verdict
+    from ..verdict import pair_folders, verdict
     from .compare_severity import check_zones, print_severity, severity_agreement, severity_json
 
     check_zones(zones)
@@ -241,20 +210,31 @@ def compare(
     folders = [load_results(path) for path in results_dirs]
     for folder in folders:
         _check_recordings(folder)
-    if len(folders) == 2:
-        options, csv_path = _two_folders(folders, baseline)
+    pair = None
+    if len(folders) == 2:  # the folders are compared, run by run (verdict.pair_folders)
+        pair = pair_folders(
+            [f.results for f in folders],
+            [f.path for f in folders],
+            per_recording=[f.per_recording for f in folders],
+            allocation=folders[0].allocation,
+            baseline=baseline,
+        )
+        csv_path = folders[1].path / pair.table_name
+    else:
+        csv_path = folders[0].path / "comparison.csv"
+    csv_path = output_folder(csv_path.parent, out, "the comparison table") / csv_path.name
+    if pair is not None:
+        comparison = pair.compare(margin)
     else:
         folder = folders[0]
-        options = {
-            "results": folder.results,
-            "baseline": baseline or folder.reference,
-            "per_recording": folder.per_recording,
-            "allocation": folder.allocation,
-            "order": folder.sensors,
-        }
-        csv_path = folder.path / "comparison.csv"
-    csv_path = output_folder(csv_path.parent, out, "the comparison table") / csv_path.name
-    comparison = run_compare(margin=margin, **options)
+        comparison = run_compare(
+            folder.results,
+            baseline or folder.reference,
+            margin=margin,
+            per_recording=folder.per_recording,
+            allocation=folder.allocation,
+            order=folder.sensors,
+        )
     _unpaired(comparison)
     write_frame(comparison.table, csv_path)
     findings = verdict(comparison)

@@ -127,13 +127,14 @@ def _run(
     choices: tuple[bool, bool, str],
 ) -> dict[str, Any]:
     """Plan the sweep, estimate both strategies, check the folder, run the chosen one, report."""
+    from ..bench import check_estimate, stored_runs
     from ..bench.estimate import estimate
     from ..explore.adaptive import screen_of
     from ..explore.run import plan_explore
     from ..explore.size import run_estimate, sweep_estimate
     from .explore_run import adaptive
     from .explore_run import exhaustive as run_exhaustive
-    from .planned import check_estimate, print_skipped, stored_runs
+    from .planned import print_skipped
 
     yes, no_report, strategy = choices
     reg = registry(ctx)

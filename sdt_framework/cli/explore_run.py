@@ -38,36 +38,50 @@ def adaptive(explore_plan: Any, reg: Any, out_dir: Path, report: bool) -> dict[s
     return tables
 
 
+#: how the exhaustive sweep's refusals and out-of-memory line name it
+_SWEEP_WORDS = (
+    "sweep",
+    "use fewer points, repeats or classifiers",
+    "use fewer points, repeats or classifiers, shorter or fewer recordings, or fewer --jobs",
+)
+
+
 def exhaustive(
     reg: Any, explore_plan: Any, out_dir: Path, size: Estimate, report: bool
 ) -> dict[str, Any]:
     """Every point through the full protocol in one benchmark folder."""
-    from ..bench.estimate import estimate
-    from ..bench.output import write_outputs
-    from ..bench.runner import preflight, run_benchmark
+    from ..bench import Wording, run_plan_folder
     from ..data.sizes import building
     from ..explore.output import write_explore
     from ..explore.run import explore_table
     from ..explore.size import assumptions
-    from .planned import stored_runs
-    from .progress import progress_bar
+    from .progress import Bars
 
-    plan = explore_plan.plan
-    preflight(plan, out_dir)
-    console.print(f"  {size.line()}", highlight=False, soft_wrap=True)
-    benchmark = estimate(plan, stored_runs=stored_runs(out_dir))
-    console.print(f"  ({assumptions(plan, benchmark, report)})", highlight=False, soft_wrap=True)
-    smaller = (
-        "use fewer points, repeats or classifiers, shorter or fewer recordings, or fewer --jobs"
-    )
-    with building(f"running the sweep ({size.line()})", smaller), progress_bar() as progress:
-        result = run_benchmark(plan, out_dir, progress, warn)
-        results = write_outputs(result, out_dir)
-        table = explore_table(explore_plan, results, result.features)
-        tables = write_explore(explore_plan, table, out_dir)
-    if report:
-        from ..report import write_report
+    tables: dict[str, Any] = {}
+    bars = Bars()
 
-        write_report(out_dir, registry=reg)
-    console.print(f"{len(results)} runs; exploration in {out_dir}", highlight=False)
+    def started(plan: Any, benchmark: Estimate) -> None:
+        console.print(f"  {size.line()}", highlight=False, soft_wrap=True)
+        console.print(
+            f"  ({assumptions(plan, benchmark, report)})", highlight=False, soft_wrap=True
+        )
+
+    def finish(run: Any) -> None:
+        with building(f"running the sweep ({size.line()})", _SWEEP_WORDS[2]):
+            table = explore_table(explore_plan, run.results, run.result.features)
+            tables.update(write_explore(explore_plan, table, out_dir))
+        bars.close()
+        if report:
+            from ..report import write_report
+
+            write_report(out_dir, registry=reg)
+
+    try:  # the sweep's size, the report's included, was checked and agreed to before
+        run = run_plan_folder(
+            explore_plan.plan, out_dir, yes=True, progress=bars, warn=warn, started=started,
+            finish=finish, wording=Wording(*_SWEEP_WORDS),
+        )  # fmt: skip
+    finally:
+        bars.close()
+    console.print(f"{len(run.results)} runs; exploration in {out_dir}", highlight=False)
     return tables

@@ -1,45 +1,28 @@
-"""What ``sdt sensors list`` and ``show`` print about parts: summaries, filters, provenance.
+"""What ``sdt sensors list`` and ``show`` print about parts: summaries, rows, provenance.
 
-Pure functions from specs to JSON-ready dicts and table rows, so the filters
-are tested without a terminal. A part qualifies for a filter when at least one
-of its modes does (``--min-rate 6400``: some mode samples at 6400 Hz or
-faster); noise is read on the X axis, the benchmark's default.
+Pure functions from specs to JSON-ready dicts and table rows, tested without a
+terminal. Which profiles and parts pass the list's filters is
+:func:`sdt_framework.parts.search`; here only the option text of a price.
 """
 
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from typing import Any
 
 from ..errors import SDTError
-from ..parts import PartSpec, all_modes, resolve
+from ..parts import PartSpec, PriceLimit, all_modes, resolve
 from ..specs import SensorSpec
 
-__all__ = ["Filters", "parse_price", "part_json", "part_row", "profile_matches", "sensor_json"]
+__all__ = ["parse_price", "part_json", "part_row", "sensor_json"]
 
 
-@dataclass(frozen=True)
-class Filters:
-    """The list filters; None means not given."""
-
-    max_price: tuple[float, str | None] | None = None
-    min_rate: float | None = None
-    max_noise: float | None = None
-    simulable_at: float | None = None
-
-    @property
-    def any(self) -> bool:
-        """True if any filter is set."""
-        return any(v is not None for v in self.__dict__.values())
-
-
-def parse_price(text: str) -> tuple[float, str | None]:
-    """``"10"`` -> (10.0, None); ``"10EUR"`` or ``"10 eur"`` -> (10.0, "EUR")."""
+def parse_price(text: str) -> PriceLimit:
+    """``"10"`` -> 10 in the prices' one currency; ``"10EUR"`` or ``"10 eur"`` -> 10 EUR."""
     match = re.fullmatch(r"\s*([0-9]+(?:\.[0-9]*)?)\s*([A-Za-z]{3})?\s*", text)
     if match is None:
         raise SDTError(f"--max-price {text!r}: give an amount, optionally with a currency: 10EUR")
-    return float(match[1]), match[2].upper() if match[2] else None
+    return PriceLimit(float(match[1]), match[2].upper() if match[2] else None)
 
 
 def sensor_json(spec: SensorSpec) -> dict[str, Any]:
@@ -130,52 +113,6 @@ def part_json(part: PartSpec) -> dict[str, Any]:
         "distribution": part.distribution,
         "content_hash": part.content_hash(),
     }
-
-
-def _price_ok(price: Any, limit: tuple[float, str | None]) -> bool:
-    amount, currency = limit
-    if price is None:
-        return False
-    return (currency is None or price.currency == currency) and price.amount <= amount
-
-
-def check_currencies(parts: list[PartSpec], limit: tuple[float, str | None] | None) -> None:
-    """A --max-price without currency is only meaningful if all prices share one."""
-    if limit is None or limit[1] is not None:
-        return
-    found = sorted({p.price.currency for p in parts if p.price})
-    if len(found) > 1:
-        raise SDTError(
-            f"--max-price {limit[0]:g}: prices are in {', '.join(found)}; add the currency, "
-            f"e.g. --max-price {limit[0]:g}{found[0]}"
-        )
-
-
-def _sensor_ok(sensor: SensorSpec, filters: Filters) -> bool:
-    rate = sensor.sampling_rate_hz
-    if filters.min_rate is not None and rate != "native" and float(rate) < filters.min_rate:
-        return False
-    if filters.max_noise is not None and sensor.noise_density_ug_rthz > filters.max_noise:
-        return False
-    if filters.simulable_at is None:
-        return True
-    # here, not at the top: the chain package loads scipy.signal (about 1 s), which only
-    # --simulable-at needs; every other sdt command's start-up would pay for it
-    from ..chain.simulable import simulation_problem
-
-    return simulation_problem(sensor, filters.simulable_at) is None
-
-
-def profile_matches(spec: SensorSpec, filters: Filters) -> bool:
-    """Whether a sensor profile passes the filters (profiles have no price)."""
-    return filters.max_price is None and _sensor_ok(spec, filters)
-
-
-def part_matches(part: PartSpec, filters: Filters) -> list[str]:
-    """Canonical names of the part's modes that pass every filter (empty: the part is out)."""
-    if filters.max_price is not None and not _price_ok(part.price, filters.max_price):
-        return []
-    return [s.name for s in _summary(part)["sensors"] if _sensor_ok(s, filters)]
 
 
 def _modes_text(part: PartSpec) -> str:

@@ -102,21 +102,18 @@ def list_sensors(
 
       sdt sensors list --simulable-at 20000 --max-noise 100 --json
     """
+    from ..parts import PartFilter, search
+
     reg = registry(ctx)
-    filters = views.Filters(
-        views.parse_price(max_price) if max_price else None, min_rate, max_noise, simulable_at
-    )
-    parts = reg.parts()
-    views.check_currencies(parts, filters.max_price)
-    profiles = [s for s in reg.sensors() if views.profile_matches(s, filters)]
-    matching = {p.name: views.part_matches(p, filters) if filters.any else [] for p in parts}
-    parts = [p for p in parts if not filters.any or matching[p.name]]
+    price = views.parse_price(max_price) if max_price else None
+    found = search(reg.sensors(), reg.parts(), PartFilter(price, min_rate, max_noise, simulable_at))
+    profiles, parts = list(found.profiles), [match.part for match in found.parts]
     if as_json:
         out = [views.sensor_json(s) for s in profiles]
-        for part in parts:
-            entry = views.part_json(part)
-            if filters.any:
-                entry["matching_modes"] = matching[part.name]
+        for match in found.parts:
+            entry = views.part_json(match.part)
+            if match.modes is not None:  # some filter was given
+                entry["matching_modes"] = list(match.modes)
             out.append(entry)
         print_json(out)
         return

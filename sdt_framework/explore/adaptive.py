@@ -34,11 +34,9 @@ import numpy as np
 import pandas as pd
 
 from ..bench.estimate import Estimate, format_duration
-from ..bench.folder_lock import unlock_results_folder
-from ..bench.output import write_outputs
+from ..bench.job import Wording, run_plan_folder
 from ..bench.plan import Plan, plan_benchmark
 from ..bench.results import write_frame
-from ..bench.runner import preflight, run_benchmark
 from ..errors import SDTError
 from ..registry import Registry
 from .effects import with_best
@@ -69,6 +67,7 @@ ADAPTIVE_ENTRIES = frozenset(
 )
 #: left by a write cut short (io.atomic_path, the link's temporary name)
 _TEMPORARY = re.compile(r"^\..+\.tmp$")
+_SMALLER = "use fewer points, repeats or classifiers, shorter or fewer recordings"
 
 
 def not_adaptive(explore: ExplorePlan) -> str | None:
@@ -249,18 +248,20 @@ class Adaptive:
         """Run ``plan`` in ``folder`` (resuming it), the runs of ``previous`` copied in first.
 
         Returns the tidy results and the windows' features (for zone agreement).
+        The whole sweep's size was checked and agreed to before its first folder.
         """
-        preflight(plan, folder)  # claims and locks the folder
-        try:
-            if previous is not None:
-                for run in sorted((previous / "runs").glob("*.json")):
-                    target = folder / "runs" / run.name
-                    if not target.exists():
-                        shutil.copy2(run, target)
-            result = run_benchmark(plan, folder, self.progress, self.warn)
-            return write_outputs(result, folder), result.features
-        finally:
-            unlock_results_folder(folder)
+
+        def copy_runs(plan: Plan, size: Estimate) -> None:  # once the folder is claimed
+            for run in sorted((previous / "runs").glob("*.json")) if previous else ():
+                target = folder / "runs" / run.name
+                if not target.exists():
+                    shutil.copy2(run, target)
+
+        run = run_plan_folder(
+            plan, folder, yes=True, progress=self.progress, warn=self.warn, started=copy_runs,
+            wording=Wording("adaptive sweep", _SMALLER, _SMALLER),
+        )  # fmt: skip
+        return run.results, run.result.features
 
 
 def _names(by_field: dict[str, Line], todo: dict[str, set[int]]) -> set[str]:

@@ -12,6 +12,9 @@ Public API
 compare(results, baseline, *, margin=0.02, ...) -> Comparison
     Paired differences per cell, per machine and scenario and overall, with
     repetition and recording intervals, Holm-adjusted p-values, TOST and labels.
+pair_folders(results, paths, *, per_recording, allocation, baseline) -> FolderPair
+    Two results folders' tables paired run by run, each folder named by what
+    differs (feature set, dataset, folder name); ``FolderPair.compare(margin)``.
 stack_folders(frames, labels)
     Two results tables as one, to compare two folders ("source" as treatment).
 verdict(comparison) -> list[Finding]
@@ -25,21 +28,26 @@ from __future__ import annotations
 from .cdplot import plot_cd_diagram
 from .compare import CELL_KEYS, Comparison, compare, stack_folders
 from .equivalence import LABELS, interval_label
+from .folders import FOLDER_CELLS, FolderPair, folder_labels, pair_folders
 from .ranking import Ranking, critical_difference, friedman_nemenyi, q_alpha
 from .recordings import macro_f1
 from .sentences import Finding, verdict
 
 __all__ = [
     "CELL_KEYS",
+    "FOLDER_CELLS",
     "LABELS",
     "Comparison",
     "Finding",
+    "FolderPair",
     "Ranking",
     "compare",
     "critical_difference",
+    "folder_labels",
     "friedman_nemenyi",
     "interval_label",
     "macro_f1",
+    "pair_folders",
     "plot_cd_diagram",
     "q_alpha",
     "stack_folders",

@@ -24,10 +24,7 @@ from pathlib import Path
 
 import pytest
 
-from sdt_framework.bench.config import load_config
-from sdt_framework.bench.plan import plan_benchmark
-from sdt_framework.bench.results import tidy
-from sdt_framework.bench.runner import run_benchmark
+from sdt_framework.bench import load_config, run_benchmark_folder, tidy
 from sdt_framework.registry import build_registry
 
 
@@ -46,7 +43,7 @@ def lr_on_seed0(where: Path, **options):
             **options,
         },
     )
-    result = run_benchmark(plan_benchmark(config, build_registry()), where / "out")
+    result = run_benchmark_folder(config, build_registry(), where / "out").result
     results, per_class, _ = tidy(result.runs)
     return results, per_class
 

@@ -6,9 +6,7 @@ import numpy as np
 import pytest
 
 from sdt_framework import SDTError
-from sdt_framework.bench.config import BenchmarkConfig, load_config
-from sdt_framework.bench.output import write_outputs
-from sdt_framework.bench.runner import plan_benchmark, run_benchmark
+from sdt_framework.bench import BenchmarkConfig, load_config, plan_benchmark, run_benchmark_folder
 from sdt_framework.report import build as report_build
 from sdt_framework.report.load import load_results
 from sdt_framework.report.render import render_markdown
@@ -35,8 +33,7 @@ def runs(tmp_path_factory, registry):
     for dtype in ("float32", "float16"):
         config = BenchmarkConfig(**TINY, cache_dir=str(root / "cache"), feature_dtype=dtype)
         folder = root / dtype
-        out[dtype] = (run_benchmark(plan_benchmark(config, registry), folder), folder)
-        write_outputs(out[dtype][0], folder)
+        out[dtype] = (run_benchmark_folder(config, registry, folder).result, folder)
     return out
 
 

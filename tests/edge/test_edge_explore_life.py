@@ -7,8 +7,7 @@ import pandas as pd
 import pytest
 
 from sdt_framework import build_registry
-from sdt_framework.bench.output import write_outputs
-from sdt_framework.bench.runner import run_benchmark
+from sdt_framework.bench import run_plan_folder
 from sdt_framework.edge.cells import cell
 from sdt_framework.edge.life_objective import non_dominated
 from sdt_framework.edge.node import NodeSettings, node_budget
@@ -31,7 +30,7 @@ def test_pareto_csv_carries_battery_life_and_the_front_with_it(tmp_path):
     protocol = {**PROTOCOL, "cache_dir": str(tmp_path / "cache")}
     explore = plan_explore(parse_sweep(SWEEP), protocol, {}, registry)
     out = tmp_path / "out"
-    results = write_outputs(run_benchmark(explore.plan, out), out)
+    results = run_plan_folder(explore.plan, out).results
     write_explore(explore, explore_table(explore, results), out)
     pareto = pd.read_csv(out / "pareto.csv")
     points = pd.read_csv(out / "points.csv")

@@ -18,8 +18,7 @@ import pandas as pd
 import pytest
 
 from sdt_framework import build_registry
-from sdt_framework.bench.output import write_outputs
-from sdt_framework.bench.runner import run_benchmark
+from sdt_framework.bench import run_plan_folder
 from sdt_framework.explore.adaptive import SCREEN_CLASSIFIERS, Adaptive, budget
 from sdt_framework.explore.output import write_explore
 from sdt_framework.explore.run import explore_table, plan_explore
@@ -46,8 +45,7 @@ def both(tmp_path_factory):
     protocol = {**PROTOCOL, "cache_dir": str(tmp / "cache")}
     registry = build_registry()
     explore = plan_explore(parse_sweep(SWEEP), protocol, {}, registry)
-    result = run_benchmark(explore.plan, tmp / "exhaustive")
-    table = explore_table(explore, write_outputs(result, tmp / "exhaustive"))
+    table = explore_table(explore, run_plan_folder(explore.plan, tmp / "exhaustive").results)
     exhaustive = write_explore(explore, table, tmp / "exhaustive")
     adaptive = Adaptive(explore, registry, tmp / "adaptive").run()
     return explore, exhaustive, adaptive, tmp

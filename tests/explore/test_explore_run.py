@@ -12,9 +12,7 @@ import pytest
 from typer.testing import CliRunner
 
 from sdt_framework import build_registry
-from sdt_framework.bench.config import BenchmarkConfig
-from sdt_framework.bench.output import write_outputs
-from sdt_framework.bench.runner import plan_benchmark, run_benchmark
+from sdt_framework.bench import BenchmarkConfig, plan_benchmark, run_benchmark, run_plan_folder
 from sdt_framework.cli.main import app
 from sdt_framework.explore.output import EXPLORE_FILES, write_explore
 from sdt_framework.explore.run import explore_table, plan_explore
@@ -39,9 +37,8 @@ def run_explore(tmp_path, protocol=None, name="out"):
     protocol = {**PROTOCOL, "cache_dir": str(tmp_path / "cache"), **(protocol or {})}
     explore = plan_explore(parse_sweep(SWEEP), protocol, {}, registry)
     out = tmp_path / name
-    result = run_benchmark(explore.plan, out)
-    results = write_outputs(result, out)
-    table = explore_table(explore, results)
+    run = run_plan_folder(explore.plan, out)
+    result, table = run.result, explore_table(explore, run.results)
     write_explore(explore, table, out)
     return explore, result, table, out
 

@@ -18,10 +18,8 @@ import pandas as pd
 import pytest
 
 from sdt_framework import build_registry
-from sdt_framework.bench.config import BenchmarkConfig
-from sdt_framework.bench.output import write_outputs
+from sdt_framework.bench import BenchmarkConfig, run_benchmark_folder
 from sdt_framework.bench.results import RUN_COLUMNS
-from sdt_framework.bench.runner import plan_benchmark, run_benchmark
 
 from .conftest import SMALL
 
@@ -33,7 +31,7 @@ def built(tmp_path_factory):
     config = BenchmarkConfig(
         **{**SMALL, "sensors": ["wilcoxon-786b10", "adxl345"], "cache_dir": str(root / "cache")}
     )
-    write_outputs(run_benchmark(plan_benchmark(config, build_registry()), root / "a"), root / "a")
+    run_benchmark_folder(config, build_registry(), root / "a")
     return root / "a"
 
 

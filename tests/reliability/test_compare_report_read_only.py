@@ -16,9 +16,7 @@ import subprocess
 import pytest
 
 from sdt_framework import build_registry
-from sdt_framework.bench.config import BenchmarkConfig
-from sdt_framework.bench.output import write_outputs
-from sdt_framework.bench.runner import plan_benchmark, run_benchmark
+from sdt_framework.bench import BenchmarkConfig, run_benchmark_folder
 
 from .conftest import SMALL
 
@@ -31,7 +29,7 @@ def locked(tmp_path):
         **{**SMALL, "sensors": ["wilcoxon-786b10", "adxl345"], "classifiers": ["lr"]},
         cache_dir=str(tmp_path / "cache"),
     )
-    write_outputs(run_benchmark(plan_benchmark(config, build_registry()), folder), folder)
+    run_benchmark_folder(config, build_registry(), folder)
     shutil.rmtree(folder / "runs")  # an archived copy: the outputs only
     if os.geteuid() == 0:
         subprocess.run(["chattr", "+i", str(folder)], check=True)

@@ -9,8 +9,7 @@ report). They now go to the report's own figures folder, with every other file.
 from __future__ import annotations
 
 from sdt_framework import build_registry
-from sdt_framework.bench.output import write_outputs
-from sdt_framework.bench.runner import run_benchmark
+from sdt_framework.bench import run_plan_folder
 from sdt_framework.explore.output import write_explore
 from sdt_framework.explore.run import explore_table, plan_explore
 from sdt_framework.explore.sweep_file import parse_sweep
@@ -33,7 +32,7 @@ def test_the_report_of_a_sweep_writes_only_into_out(tmp_path):
     protocol = {**small_protocol(repeats=2), "cache_dir": str(tmp_path / "cache")}
     explore = plan_explore(parse_sweep(SWEEP), protocol, {}, build_registry())
     sweep = tmp_path / "sweep"
-    table = explore_table(explore, write_outputs(run_benchmark(explore.plan, sweep), sweep))
+    table = explore_table(explore, run_plan_folder(explore.plan, sweep).results)
     write_explore(explore, table, sweep)
     before = _files(sweep)
 

@@ -9,9 +9,7 @@ import numpy as np
 import pytest
 from matplotlib import image
 
-from sdt_framework.bench.config import BenchmarkConfig
-from sdt_framework.bench.output import write_outputs
-from sdt_framework.bench.runner import plan_benchmark, run_benchmark
+from sdt_framework.bench import BenchmarkConfig, run_benchmark_folder
 
 #: Motor-2 only, 1.5 s acquisitions, 2 channels, reference + one MEMS, 2 classifiers.
 SMALL = {
@@ -32,7 +30,7 @@ def results_master(tmp_path_factory, registry) -> Path:
     root = tmp_path_factory.mktemp("report-results")
     config = BenchmarkConfig(**{**SMALL, "cache_dir": str(root / "cache")})
     out = root / "results"
-    write_outputs(run_benchmark(plan_benchmark(config, registry), out), out)
+    run_benchmark_folder(config, registry, out)
     return out
 
 
