@@ -95,7 +95,7 @@ def register_signal_readers(register: Register) -> None:
     for each file format: its suffixes, an optional ``sniff(head)`` of the
     file's first 1024 bytes (needed when another reader shares a suffix), and
     ``scan``/``probe``/``read`` functions returning
-    ``sdt_framework.data.readers.SignalInfo`` and float64 samples. A manifest
+    ``sdt_framework.signals.rules.SignalInfo`` and float64 samples. A manifest
     row, ``sdt dataset inspect FILE`` and ``sdt dataset manifest`` pick the
     reader by suffix and sniff; one reader per module.
     """

@@ -1,12 +1,12 @@
-"""CSV signal files (the rule of :mod:`sdt_framework.data.csv_signal`): no rate or units held."""
+"""CSV signal files (the rule of :mod:`sdt_framework.signals.csv_rule`): no rate or units held."""
 
 from __future__ import annotations
 
 from pathlib import Path
 
 from sdt_framework import hookimpl
-from sdt_framework.data.csv_signal import read_csv_signal
-from sdt_framework.data.readers import SignalInfo
+from sdt_framework.signals.csv_rule import read_csv_signal
+from sdt_framework.signals.rules import SignalInfo
 from sdt_framework.specs import ReaderSpec
 
 

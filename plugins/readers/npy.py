@@ -7,9 +7,9 @@ from pathlib import Path
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, orient, real
-from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.tokens import brief
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.rules import SignalInfo, as_acquisitions, orient, real
+from sdt_framework.signals.tokens import brief
 from sdt_framework.specs import ReaderSpec
 
 

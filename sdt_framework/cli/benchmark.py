@@ -271,7 +271,7 @@ def _locked_run(
     _say("note:", "yellow", f"this benchmark is {size.line()} ({ASSUMES})")
     for label, line in start_lines(plan, size):
         _say(label, "yellow", line)
-    from ..data.sizes import building
+    from ..signals.sizes import building
 
     reduce = "process less data at once (shorter or fewer recordings, fewer --jobs)"
     with building(f"running the benchmark ({size.line()})", reduce):

@@ -15,8 +15,8 @@ __all__ = ["adaptive", "exhaustive"]
 
 def adaptive(explore_plan: Any, reg: Any, out_dir: Path, report: bool) -> dict[str, Any]:
     """Screen every point, refine along the lines through the base, report the last round."""
-    from ..data.sizes import building
     from ..explore.adaptive import Adaptive
+    from ..signals.sizes import building
     from .progress import progress_bar
 
     smaller = "use fewer points, repeats or classifiers, shorter or fewer recordings"
@@ -45,10 +45,10 @@ def exhaustive(
     from ..bench.estimate import estimate
     from ..bench.output import write_outputs
     from ..bench.runner import preflight, run_benchmark
-    from ..data.sizes import building
     from ..explore.output import write_explore
     from ..explore.run import explore_table
     from ..explore.size import assumptions
+    from ..signals.sizes import building
     from .planned import stored_runs
     from .progress import progress_bar
 

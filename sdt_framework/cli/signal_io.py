@@ -1,7 +1,7 @@
 """Reading and writing signal arrays for the commands that take a signal file.
 
 A signal file is read through the registered readers, handed down from the
-command's registry (:func:`open_input`, :mod:`sdt_framework.data.one_signal`):
+command's registry (:func:`open_input`, :mod:`sdt_framework.signals.one_signal`):
 any registered format, with the rate and units the file holds, ``--fs`` only
 where it holds none, ``--signal`` where it holds several. Before reading,
 :func:`check_signal_size` sizes the job from the file's header (NPY, CSV,
@@ -28,7 +28,7 @@ from ..io import atomic_path
 from .common import err_console
 
 if TYPE_CHECKING:
-    from ..data import FileSignal
+    from ..signals import FileSignal
 
 __all__ = [
     "SUFFIXES",
@@ -68,9 +68,9 @@ def open_input(
 ) -> FileSignal:
     """The signal of ``path`` to read (any registered format), sized against the memory
     available at ``bytes_per_sample``; ``choices`` go to
-    :func:`~sdt_framework.data.one_signal.open_signal` (``signal``, ``rate_hz``, ``units``,
+    :func:`~sdt_framework.signals.one_signal.open_signal` (``signal``, ``rate_hz``, ``units``,
     ``options``, ``default_rate``). The reader's note is printed."""
-    from ..data import open_signal
+    from ..signals import open_signal
     from .guards import check_memory
 
     check_signal_size(path, bytes_per_sample, advice)  # a CSV before it is parsed
@@ -107,19 +107,22 @@ def zero_motion_recording(
     reference_fs: float,
 ) -> tuple[NDArray[np.float64], float]:
     """(samples in g, rate) of ``sdt validate-noise --recording``: through its reader, the
-    rate the file's or --fs or the sensor's output rate; of an IDE file the ``axis`` of the
-    channel of the sensor's part (or --channel) unless --signal names one."""
+    rate the file's or --fs or the sensor's output rate; of a file of channels (IDE) the
+    ``axis`` of the channel of the sensor's part (or --channel) unless --signal names one."""
     from ..chain import compile_chain
-    from ..data.ide import inspect_ide, is_ide, part_channel
-    from ..data.signal_sizes import DEGRADE_BYTES_PER_SAMPLE
+    from ..signals.channels import axis_variable, part_channel
+    from ..signals.file_sizes import DEGRADE_BYTES_PER_SAMPLE
+    from ..signals.files import channel_reader
 
     if unit is not None and unit.lower() not in UNITS:
         raise SDTError(f"--unit {unit!r}: use one of {', '.join(UNITS)}")
-    if channel is not None and (signal is not None or not is_ide(path)):
+    recorder = channel_reader(path, readers)  # a file of channels (IDE): the part's channel
+    if channel is not None and (signal is not None or recorder is None):
         raise SDTError(f"{path}: --channel is for an .IDE recording without --signal; drop it")
-    if signal is None and is_ide(path):
-        chosen = part_channel(path, inspect_ide(path), spec.name) if channel is None else channel
-        signal = f"{chosen}:{axis}"
+    if signal is None and recorder is not None:
+        listed = recorder.channels(path)[0]
+        chosen = part_channel(path, listed, spec.name) if channel is None else channel
+        signal = axis_variable(chosen, axis)
     opened = open_input(
         path, readers, DEGRADE_BYTES_PER_SAMPLE, "cut the recording to a shorter stretch",
         signal=signal, rate_hz=fs, units=None if unit is None else unit.lower(),
@@ -135,7 +138,7 @@ def zero_motion_recording(
 
 def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> NDArray[np.float64]:
     """Convert a recording from ``unit`` (g, mg, m/s^2, or raw LSB times ``scale`` g/LSB) to g."""
-    from ..data.one_signal import TO_G
+    from ..signals.one_signal import TO_G
 
     if unit in TO_G:
         return x if unit == "g" else x * TO_G[unit]
@@ -149,7 +152,7 @@ def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> 
 def check_signal_size(path: Path, bytes_per_sample: int, advice: str) -> None:
     """Refuse the signal file ``path`` before reading it if its samples (from its header)
     at ``bytes_per_sample`` each need more memory than is available."""
-    from ..data.signal_sizes import CSV_PARSE_BYTES_PER_SAMPLE, file_samples
+    from ..signals.file_sizes import CSV_PARSE_BYTES_PER_SAMPLE, file_samples
     from .guards import check_memory
 
     samples = file_samples(path)
@@ -165,7 +168,7 @@ def check_pair_size(pair: Path) -> None:
     A TOML pair is sized from its two files' headers, an IDE file from its
     bytes; a pair that cannot be read this way is left to the loader's message.
     """
-    from ..data.signal_sizes import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
+    from ..signals.file_sizes import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
     from .guards import check_memory
 
     advice = "cut the recordings to a shorter stretch (a few minutes hold every band)"

@@ -5,7 +5,7 @@ twin check`` read a signal file whole with no estimate: a sparse 9.6 GB
 ``.npy`` grew past 8 GB of memory (or, under ``ulimit -v``, ended in "out of
 memory" after the read had started). Now the samples are read from the
 file's header, multiplied by the command's measured bytes per sample
-(:mod:`sdt_framework.data.signal_sizes`), and a file that cannot fit in the
+(:mod:`sdt_framework.signals.file_sizes`), and a file that cannot fit in the
 memory available is refused in one line naming the file, its samples, the
 memory needed and the memory available.
 
@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sdt_framework.data.signal_sizes import (
+from sdt_framework.signals.file_sizes import (
     DEGRADE_BYTES_PER_SAMPLE,
     FEATURES_BYTES_PER_SAMPLE,
     TWIN_BYTES_PER_SAMPLE,

@@ -46,7 +46,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .recording import DataFileError
+from .errors import DataFileError
 from .sizes import available_memory, human_bytes
 
 __all__ = [
