@@ -177,6 +177,16 @@ def read(path: Path, variable: str | None) -> np.ndarray:
     return as_acquisitions(path, data)
 
 
+def count(path: Path, variable: str | None) -> int | None:
+    """Values in the file's arrays (or ``variable``'s), from the list of its variables."""
+    from scipy.io import whosmat
+
+    found = [(name, shape) for name, shape, _ in whosmat(str(path))]
+    if variable is not None:
+        found = [(name, shape) for name, shape in found if name == variable]
+    return sum(math.prod(shape) for _, shape in found) or None
+
+
 def sniff(head: bytes) -> bool:
     """A MATLAB v5-v7 file: its 116-byte text header says so (v7.3 goes to :mod:`.mat73`)."""
     return head.startswith(b"MATLAB 5.0") and head[512:520] != HDF5_AT_512
@@ -196,5 +206,6 @@ def register_signal_readers(register):
             scan=scan,
             probe=probe,
             read=read,
+            count=count,
         )
     )

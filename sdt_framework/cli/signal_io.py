@@ -73,7 +73,7 @@ def open_input(
     from ..signals import open_signal
     from .guards import check_memory
 
-    check_signal_size(path, bytes_per_sample, advice)  # a CSV before it is parsed
+    check_signal_size(path, readers, bytes_per_sample, advice)  # a CSV before it is parsed
     signal = open_signal(path, readers, **choices)
     note(signal.info.note)
     check_memory(path, f"{signal.n_values:,} samples", signal.n_values * bytes_per_sample, advice)
@@ -149,20 +149,22 @@ def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> 
     raise SDTError(f"{label}: unknown unit {unit!r}; use one of {', '.join(UNITS)}")
 
 
-def check_signal_size(path: Path, bytes_per_sample: int, advice: str) -> None:
-    """Refuse the signal file ``path`` before reading it if its samples (from its header)
-    at ``bytes_per_sample`` each need more memory than is available."""
-    from ..signals.file_sizes import CSV_PARSE_BYTES_PER_SAMPLE, file_samples
+def check_signal_size(path: Path, readers: Sequence[Any], bytes_per_sample: int,
+                      advice: str) -> None:  # fmt: skip
+    """Refuse the signal file ``path`` before reading it if its samples (from its header,
+    through its reader) at ``bytes_per_sample`` each, plus what its reader's parse takes,
+    need more memory than is available."""
+    from ..signals.file_sizes import file_samples
+    from ..signals.files import reader_for
     from .guards import check_memory
 
-    samples = file_samples(path)
+    samples = file_samples(path, readers)
     if samples is not None:
-        if path.suffix.lower() == ".csv":
-            bytes_per_sample += CSV_PARSE_BYTES_PER_SAMPLE
+        bytes_per_sample += reader_for(path, readers).parse_bytes_per_value
         check_memory(path, f"{samples:,} samples", samples * bytes_per_sample, advice)
 
 
-def check_pair_size(pair: Path) -> None:
+def check_pair_size(pair: Path, readers: Sequence[Any]) -> None:
     """Refuse a paired recording (TOML pair or IDE file) that ``sdt twin check`` cannot hold.
 
     A TOML pair is sized from its two files' headers, an IDE file from its
@@ -186,7 +188,7 @@ def check_pair_size(pair: Path) -> None:
         files = [(pair.parent / s["file"], s.get("variable")) for s in sides]
     except (OSError, UnicodeError, ValueError, TypeError, KeyError):
         return  # the loader says what is wrong with the file
-    counts = [file_samples(file, variable) for file, variable in files]
+    counts = [file_samples(file, readers, variable) for file, variable in files]
     if None not in counts:
         samples = sum(c for c in counts if c is not None)
         check_memory(pair, f"{samples:,} samples", samples * TWIN_BYTES_PER_SAMPLE, advice)

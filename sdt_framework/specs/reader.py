@@ -14,6 +14,14 @@ first bytes where a suffix is shared or absent) and provides three functions:
 ``options`` are the reader's own manifest columns (``full_scale_g`` for integer
 WAV files), listed in ``options`` so that the manifest knows them.
 
+A reader may also say what a file costs before it is read: ``count(path,
+variable)`` -> the values the file stores (every signal's, or ``variable``'s),
+from its header, None where it cannot tell; ``parse_bytes_per_value``, the
+peak memory its read takes per value beyond the float64 result (a text format
+parsed whole). A command sizes a file through them
+(:func:`sdt_framework.signals.file_sizes.file_samples`) and refuses one that
+cannot fit before reading it.
+
 A format whose files hold several channels, each a sensor on its own clock
 (enDAQ IDE), also provides ``channels(path)`` -> (list of
 :class:`~sdt_framework.signals.Channel`, notes) and ``read_channel(path,
@@ -40,7 +48,17 @@ class ReaderSpec(Spec):
 
     kind: ClassVar[str] = "signal reader"
     _provenance: ClassVar[frozenset[str]] = frozenset(
-        {"plugin", "distribution", "sniff", "scan", "probe", "read", "channels", "read_channel"}
+        {
+            "plugin",
+            "distribution",
+            "sniff",
+            "scan",
+            "probe",
+            "read",
+            "count",
+            "channels",
+            "read_channel",
+        }
     )
 
     label: str = Field(description="Format name shown to users (``TDMS``, ``UFF58``).")
@@ -56,6 +74,16 @@ class ReaderSpec(Spec):
     scan: Callable[..., Any] = Field(exclude=True, description="scan(path, **options).")
     probe: Callable[..., Any] = Field(exclude=True, description="probe(path, variable, **options).")
     read: Callable[..., Any] = Field(exclude=True, description="read(path, variable, **options).")
+    count: Callable[..., int | None] | None = Field(
+        default=None,
+        exclude=True,
+        description="count(path, variable) -> values stored, from the header (None: unknown).",
+    )
+    parse_bytes_per_value: float = Field(
+        default=0.0,
+        ge=0.0,
+        description="Peak bytes per value a read takes beyond its float64 result (measured).",
+    )
     channels: Callable[..., Any] | None = Field(
         default=None,
         exclude=True,

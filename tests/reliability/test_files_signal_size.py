@@ -63,12 +63,12 @@ def refusal(result: subprocess.CompletedProcess[str], name: str, per_sample: int
     assert "split it into shorter files" in err or "shorter stretch" in err, err
 
 
-def test_header_gives_the_samples_of_npy_and_csv(tmp_path: Path, huge: Path) -> None:
-    assert file_samples(huge) == SAMPLES
+def test_header_gives_the_samples_of_npy_and_csv(tmp_path: Path, huge: Path, readers) -> None:
+    assert file_samples(huge, readers) == SAMPLES
     table = np.random.default_rng(0).normal(size=(5000, 3))
     np.savetxt(tmp_path / "a.csv", table, delimiter=",", header="t,x,y", comments="")
-    assert file_samples(tmp_path / "a.csv") == pytest.approx(15000, rel=0.02)
-    assert file_samples(tmp_path / "missing.npy") is None
+    assert file_samples(tmp_path / "a.csv", readers) == pytest.approx(15000, rel=0.02)
+    assert file_samples(tmp_path / "missing.npy", readers) is None
 
 
 def test_degrade_refuses_a_file_that_cannot_fit(tmp_path: Path, huge: Path) -> None:
