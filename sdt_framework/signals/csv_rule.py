@@ -120,7 +120,10 @@ def _parse_arrow(path: Path, skip: int, n_columns: int) -> NDArray[np.float64] |
         return None
     if table.num_columns != n_columns or any(c.null_count for c in table.columns):
         return None
-    return np.column_stack([c.to_numpy() for c in table.columns]).astype(np.float64, copy=False)
+    # one series per row in memory (rows x columns seen through .T): a column read whole
+    # is one contiguous series, so selecting every column in order copies nothing more
+    columns = np.stack([c.to_numpy() for c in table.columns]).astype(np.float64, copy=False)
+    return columns.T
 
 
 def _parse(path: Path, skip: int, labels: list[str], start: int) -> NDArray[np.float64]:
@@ -249,4 +252,5 @@ def _select(
             shown = ", ".join(quote(n) for n in names[:8]) + (", ..." if len(names) > 8 else "")
             raise DataFileError(f"{path}: no column {quote(name)}; the header has {shown}")
     index = [names.index(name) for name in wanted]
-    return CsvSignal(np.ascontiguousarray(series[index]), wanted, None)
+    chosen = series if index == list(range(len(series))) else series[index]
+    return CsvSignal(np.ascontiguousarray(chosen), wanted, None)
