@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 import pyarrow.csv as pacsv
 
-from sdt_framework.data.csv_signal import read_csv_signal
+from sdt_framework.signals.csv_rule import read_csv_signal
 
 
 def _best(func, repeat: int = 3) -> float:

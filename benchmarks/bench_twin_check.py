@@ -63,8 +63,9 @@ def main() -> None:
     args = parser.parse_args()
     if hasattr(os, "sched_setaffinity"):
         os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
-    sensor = build_registry().sensor("adxl357")
-    t_load, pair = best(lambda: load_pair(PAIR, "adxl357"), args.repeats)
+    registry = build_registry()
+    sensor, readers = registry.sensor("adxl357"), registry.signal_readers()
+    t_load, pair = best(lambda: load_pair(PAIR, "adxl357", readers=readers), args.repeats)
     t_check, result = best(lambda: check_twin(pair, sensor), args.repeats)
     a = align(pair, sensor)
     bands = third_octaves(10.0, a.rate_hz / 2)

@@ -32,6 +32,9 @@ S = TypeVar("S", bound=Spec)
 def resolve(kind: type[S], value: object, argument: str) -> S:
     """``value`` itself if it is a ``kind`` spec, the registered one if it is a name.
 
+    A sensor profile built in Python that lists stages no registry bound is
+    bound in the default registry (the chain below never looks a registry up).
+
     A sensor name may be a catalogue part in a mode, ``"adxl355[range=8g]"``,
     resolved as ``sdt degrade --sensor`` resolves it; a feature-set name may
     compose registered sets, ``"paper8+env_bpfo"``.
@@ -43,6 +46,10 @@ def resolve(kind: type[S], value: object, argument: str) -> S:
     UnknownNameError
         A name nothing registers (with the closest match).
     """
+    if isinstance(value, SensorSpec) and issubclass(kind, SensorSpec):
+        if any(use.spec is None for use in value.stages):  # built in Python: bind its stages
+            return _registry.default_registry().bind(value)  # type: ignore[return-value]
+        return value  # type: ignore[return-value]
     if isinstance(value, kind):
         return value
     if isinstance(value, str):

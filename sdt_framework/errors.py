@@ -158,7 +158,7 @@ def shown(value: object) -> str:
     ``np.int64(5)``), which a message read by a person should not show: a value
     read from a file or passed through the Python API is often one. Every message
     that quotes a value goes through here (re-exported for the readers by
-    :mod:`sdt_framework.data.tokens`).
+    :mod:`sdt_framework.signals.tokens`).
 
     >>> import numpy as np
     >>> shown(np.float64("nan")), shown(np.int64(5)), shown(0.1), shown("abc")

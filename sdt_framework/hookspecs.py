@@ -95,7 +95,11 @@ def register_signal_readers(register: Register) -> None:
     for each file format: its suffixes, an optional ``sniff(head)`` of the
     file's first 1024 bytes (needed when another reader shares a suffix), and
     ``scan``/``probe``/``read`` functions returning
-    ``sdt_framework.data.readers.SignalInfo`` and float64 samples. A manifest
-    row, ``sdt dataset inspect FILE`` and ``sdt dataset manifest`` pick the
-    reader by suffix and sniff; one reader per module.
+    ``sdt_framework.signals.SignalInfo`` and float64 samples; optionally a
+    ``count`` of the values before parsing, and ``channels``/``read_channel``
+    for a file of several channels (an IDE recording). A manifest row, ``sdt
+    dataset inspect FILE``, ``sdt dataset manifest``, ``sdt degrade``, ``sdt
+    features extract`` and a twin pair pick the reader by suffix and sniff,
+    among the readers the caller hands down; one format per plugin (a module,
+    or a package for a larger one).
     """

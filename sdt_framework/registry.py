@@ -6,11 +6,10 @@ and the like, never ``pm.hook``. The ``register`` callback handed to every hook 
 single place that validates a spec, stamps its provenance and rejects duplicates.
 
 :func:`default_registry` is the one process-wide registry that registered
-names (``degrade(x, fs, "adxl345")``) are resolved in; importing this module
-installs it as the binder of the stages a profile built in Python lists (see
-:func:`sdt_framework.stages.install_stage_binder`), so the chain binds them
-without importing the registry; it installs the default registry's signal
-readers for the data layer the same way (:mod:`sdt_framework.reader_table`).
+names (``degrade(x, fs, "adxl345")``) are resolved in (:mod:`sdt_framework.api`).
+Importing this module changes nothing below it: a lower layer that needs the
+registered readers or stages takes them as an argument
+(``reader_for(file, registry.signal_readers())``, ``registry.bind(sensor)``).
 """
 
 from __future__ import annotations
@@ -38,7 +37,6 @@ from .discovery import (
 )
 from .errors import DuplicateNameError, PluginLoadError, validation_summary
 from .parts import PartSpec
-from .reader_table import install_reader_table
 from .registry_lookup import RegistryLookup
 from .sensor_files import load_sensor_file, sensor_files_from_env
 from .specs import (
@@ -50,7 +48,6 @@ from .specs import (
     SensorSpec,
     Spec,
 )
-from .stages.bind import install_stage_binder
 from .stages.spec import StageSpec
 
 #: ``load_entry_point`` is re-exported for :mod:`.conformance`, which sits above the registry
@@ -281,19 +278,3 @@ def default_registry() -> Registry:
     plugin or changing ``SDT_PLUGINS`` in a running session).
     """
     return build_registry()
-
-
-def _bind_in_default(sensor: SensorSpec) -> SensorSpec:
-    """``sensor``'s listed stages bound to those of :func:`default_registry` (read at call time)."""
-    return default_registry().bind(sensor)
-
-
-install_stage_binder(_bind_in_default)
-
-
-def _readers_in_default() -> list[ReaderSpec]:
-    """The signal readers of :func:`default_registry` (read at call time)."""
-    return default_registry().signal_readers()
-
-
-install_reader_table(_readers_in_default)

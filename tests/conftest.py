@@ -123,6 +123,12 @@ def registry():
     return build_registry()
 
 
+@pytest.fixture(scope="session")
+def readers(registry):
+    """The built-in signal readers, as a command hands them down (``registry.signal_readers()``)."""
+    return registry.signal_readers()
+
+
 @pytest.fixture
 def sdt_main(monkeypatch, capsys):
     """``sdt_main(*args)``: ``main()`` in this process: (exit status, stdout, stderr)."""

@@ -32,7 +32,6 @@ ALLOWED: dict[str, set[str]] = {
     "csv_cells": set(),
     "inputs": {"errors"},
     "io": {"errors"},
-    "reader_table": {"errors"},
     "toml_files": {"errors", "inputs"},
     "specs": {"errors"},
     "arguments": {"dtypes", "errors", "specs"},
@@ -46,13 +45,13 @@ ALLOWED: dict[str, set[str]] = {
         "errors",
         "hookspecs",
         "parts",
-        "reader_table",
         "registry_lookup",
         "sensor_files",
         "specs",
         "stages",
     },
-    "data": _BASE | _IO | {"reader_table"},
+    "signals": {"dtypes", "errors", "inputs", "lazy"},
+    "data": _BASE | _IO | {"signals"},
     "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
     "features": {"arguments", "csv_cells", "errors", "io", "specs"},
     "edge": {"errors", "specs", "toml_files"},
@@ -60,10 +59,20 @@ ALLOWED: dict[str, set[str]] = {
     "api": {"arguments", "chain", "errors", "features", "registry", "specs"},
     "conformance": {"chain", "errors", "features", "parts", "registry", "specs", "stages"},
     "sklearn": {"api", "arguments", "chain", "errors", "features", "specs"},
-    "twin": _IO | {"chain", "data", "specs", "toml_files"},
+    "twin": _IO | {"chain", "signals", "specs", "toml_files"},
     "bench": _BASE
     | _IO
-    | {"chain", "data", "features", "parts", "registry", "specs", "stages", "toml_files"},
+    | {
+        "chain",
+        "data",
+        "features",
+        "parts",
+        "registry",
+        "signals",
+        "specs",
+        "stages",
+        "toml_files",
+    },
     "verdict": {"bench", "errors", "seeding"},
     "severity": {"data", "errors", "seeding", "toml_files", "verdict"},
     "explore": _BASE
@@ -75,6 +84,7 @@ ALLOWED: dict[str, set[str]] = {
         "registry",
         "sensor_files",
         "severity",
+        "signals",
         "specs",
         "stages",
         "toml_files",
@@ -107,6 +117,7 @@ ALLOWED: dict[str, set[str]] = {
         "registry",
         "report",
         "severity",
+        "signals",
         "specs",
         "twin",
         "validation",
@@ -122,32 +133,39 @@ def _module_name(path: Path) -> tuple[str, ...]:
     return parts[:-1] if parts[-1] == "__init__" else parts
 
 
+def _targets(path: Path, node: ast.stmt) -> Iterator[tuple[tuple[str, ...], str]]:
+    """(imported module under sdt_framework, local name) of each name ``node`` imports."""
+    package = list(path.relative_to(ROOT).parts[:-1])
+    if isinstance(node, ast.ImportFrom):
+        if node.level:
+            base = package[: len(package) - node.level + 1]
+        elif (node.module or "").split(".")[0] == "sdt_framework":
+            base = []
+        else:
+            return
+        module = (node.module or "").split(".")
+        if node.level == 0:
+            module = module[1:]
+        target = tuple(base + [m for m in module if m])
+        for alias in node.names:  # `from . import x` may name a module
+            sub = (*target, alias.name)
+            known = (ROOT.joinpath(*sub).with_suffix(".py").exists()) or (
+                ROOT.joinpath(*sub).is_dir()
+            )
+            yield (sub if known else target), alias.asname or alias.name
+    elif isinstance(node, ast.Import):
+        for alias in node.names:
+            pieces = alias.name.split(".")
+            if pieces[0] == "sdt_framework":
+                yield tuple(pieces[1:]), alias.asname or pieces[0]
+
+
 def _imports(path: Path) -> Iterator[tuple[tuple[str, ...], int]]:
     """(imported module under sdt_framework, line) of every import in ``path``, lazy ones too."""
-    package = list(path.relative_to(ROOT).parts[:-1])
     for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-        if isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = package[: len(package) - node.level + 1]
-            elif (node.module or "").split(".")[0] == "sdt_framework":
-                base = []
-            else:
-                continue
-            module = (node.module or "").split(".")
-            if node.level == 0:
-                module = module[1:]
-            target = tuple(base + [m for m in module if m])
-            for alias in node.names:  # `from . import x` may name a module
-                sub = (*target, alias.name)
-                known = (ROOT.joinpath(*sub).with_suffix(".py").exists()) or (
-                    ROOT.joinpath(*sub).is_dir()
-                )
-                yield (sub if known else target), node.lineno
-        elif isinstance(node, ast.Import):
-            for alias in node.names:
-                pieces = alias.name.split(".")
-                if pieces[0] == "sdt_framework":
-                    yield tuple(pieces[1:]), node.lineno
+        if isinstance(node, ast.ImportFrom | ast.Import):
+            for module, _ in _targets(path, node):
+                yield module, node.lineno
 
 
 def _unit(module: tuple[str, ...]) -> str:
@@ -224,3 +242,53 @@ def test_no_import_circle_between_modules():
         if node not in state:
             visit(node, [node])
     assert circles == [], "\n".join(circles)
+
+
+def _installs(path: Path) -> Iterator[str]:
+    """Top-level statements of ``path`` that call, or assign into, what another unit exports:
+    a module that, when imported, changes a module of another unit (installs a callback)."""
+    unit = _unit(_module_name(path))
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    given = {
+        name: _unit(module)
+        for node in tree.body
+        if isinstance(node, ast.ImportFrom | ast.Import)
+        for module, name in _targets(path, node)
+    }
+    for node in tree.body:
+        roots: list[ast.expr] = []
+        if isinstance(node, ast.Expr) and isinstance(node.value, ast.Call):
+            roots.append(node.value.func)
+        if isinstance(node, ast.Assign | ast.AugAssign):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            roots += [t for t in targets if isinstance(t, ast.Attribute | ast.Subscript)]
+        for root in roots:
+            while isinstance(root, ast.Attribute | ast.Subscript | ast.Call):
+                root = root.func if isinstance(root, ast.Call) else root.value
+            if isinstance(root, ast.Name) and given.get(root.id, unit) != unit:
+                yield f"{path.relative_to(ROOT)}:{node.lineno}: {ast.unparse(node)[:80]}"
+
+
+def test_no_module_installs_anything_into_another_unit_at_import():
+    """Importing a module changes no other unit: a lower layer that needs the registered
+    readers or stages takes them as an argument (a callback a higher module installs at
+    import keeps the table above green while calls still run up); and no function rebinds
+    a module's global state (``global``), the means of such an install."""
+    installs = [line for path in _sources() if path.name != "__main__.py"
+                for line in _installs(path)]  # fmt: skip
+    rebinds = [
+        f"{path.relative_to(ROOT)}:{node.lineno}: global {', '.join(node.names)}"
+        for path in _sources()
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8")))
+        if isinstance(node, ast.Global)
+    ]
+    assert installs + rebinds == [], "\n".join(installs + rebinds)
+
+
+def test_the_installed_tables_are_gone():
+    """The registry installed its readers (``reader_table``) and its binder of stages
+    (``stages.install_stage_binder``) into lower layers when imported; both are handed down."""
+    import sdt_framework.stages as stages
+
+    assert not ROOT.joinpath("reader_table.py").exists()
+    assert not [name for name in dir(stages) if name.startswith("install")]

@@ -5,11 +5,12 @@ from __future__ import annotations
 from sdt_framework import DatasetSpec, hookimpl
 
 
-def _open(path, **options):
-    """Open the dataset; the reader is imported on use so listing plugins stays fast."""
+def _open(path, *, readers, **options):
+    """Open the dataset, its files read by ``readers`` (the registry's, handed down by the
+    caller); the reader is imported on use so listing plugins stays fast."""
     from sdt_framework.data import open_manifest
 
-    return open_manifest(path, **options)
+    return open_manifest(path, readers=readers, **options)
 
 
 MANIFEST = DatasetSpec(
@@ -18,6 +19,7 @@ MANIFEST = DatasetSpec(
     source="sdt-framework manifest format (docs/data.md)",
     loader=_open,
     requires_path=True,
+    reads_signal_files=True,
 )
 
 

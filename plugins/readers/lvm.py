@@ -46,16 +46,16 @@ from sdt_plugins.readers.lvm_layout import (
 )
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import (
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.file_sizes import check_parse_size
+from sdt_framework.signals.rules import (
     SignalInfo,
     finite,
     increment_rate,
     note_unstated_units,
     pick,
 )
-from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_sizes import check_parse_size
-from sdt_framework.data.tokens import brief, quote
+from sdt_framework.signals.tokens import brief, quote
 from sdt_framework.specs import ReaderSpec
 
 #: largest LVM file parsed, bytes: about 9 s and 1.1 GB of memory for lvm_read

@@ -32,8 +32,8 @@ from typing import Any
 
 import numpy as np
 
-from sdt_framework.data.readers import HEADER_RATE_TOLERANCE
-from sdt_framework.data.tokens import quote
+from sdt_framework.signals.rules import HEADER_RATE_TOLERANCE
+from sdt_framework.signals.tokens import quote
 
 #: LabVIEW writes LVM values with six digits after the decimal point (LabVIEW Help, "LabVIEW
 #: Measurement Files"): two X values, each within half a unit of the sixth, differ from their

@@ -6,7 +6,7 @@ file is refused as neither (save it with ``-v7`` or ``-v7.3``).
 A variable is a signal when its MATLAB class is numeric: a ``logical`` array
 (which scipy reads as 0/1 ``uint8``) is listed and refused when read, as are
 text, cells and structs. A 2-D matrix is read with its longer axis as time
-(:func:`~sdt_framework.data.readers.orient`): an N x 3 matrix is three
+(:func:`~sdt_framework.signals.rules.orient`): an N x 3 matrix is three
 acquisitions of one signal, and a note says so, since its columns may as well
 be three axes.
 """
@@ -21,9 +21,9 @@ from pathlib import Path
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, names, orient
-from sdt_framework.data.recording import DataFileError, SignalTypeError
-from sdt_framework.data.tokens import brief, quote
+from sdt_framework.signals.errors import DataFileError, SignalTypeError
+from sdt_framework.signals.rules import SignalInfo, as_acquisitions, names, orient
+from sdt_framework.signals.tokens import brief, quote
 from sdt_framework.specs import ReaderSpec
 
 #: HDF5's signature, where a MATLAB v7.3 file (512-byte user block) holds it
@@ -177,6 +177,16 @@ def read(path: Path, variable: str | None) -> np.ndarray:
     return as_acquisitions(path, data)
 
 
+def count(path: Path, variable: str | None) -> int | None:
+    """Values in the file's arrays (or ``variable``'s), from the list of its variables."""
+    from scipy.io import whosmat
+
+    found = [(name, shape) for name, shape, _ in whosmat(str(path))]
+    if variable is not None:
+        found = [(name, shape) for name, shape in found if name == variable]
+    return sum(math.prod(shape) for _, shape in found) or None
+
+
 def sniff(head: bytes) -> bool:
     """A MATLAB v5-v7 file: its 116-byte text header says so (v7.3 goes to :mod:`.mat73`)."""
     return head.startswith(b"MATLAB 5.0") and head[512:520] != HDF5_AT_512
@@ -196,5 +206,6 @@ def register_signal_readers(register):
             scan=scan,
             probe=probe,
             read=read,
+            count=count,
         )
     )

@@ -5,7 +5,7 @@ array is a signal: a top-level variable, a struct's field (``s.f``), a cell's
 element (``c{2}``), a struct array's field (``s(3).f``), named as MATLAB
 writes the expression (:mod:`.mat73_tree`). MATLAB writes arrays column-major,
 so h5py sees them transposed; the longer axis is time either way
-(:func:`~sdt_framework.data.readers.orient`); a matrix is noted (in MATLAB's
+(:func:`~sdt_framework.signals.rules.orient`); a matrix is noted (in MATLAB's
 row x column order). A top-level variable that is not a signal is listed with
 the reason (as in :mod:`.mat`): a ``logical`` array, an empty one (MATLAB
 stores ``[]`` as its dimensions), a complex or sparse one, text, or a struct
@@ -19,9 +19,9 @@ from pathlib import Path
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, pick
-from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.tokens import brief, quote
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.rules import SignalInfo, as_acquisitions, pick
+from sdt_framework.signals.tokens import brief, quote
 from sdt_framework.specs import ReaderSpec
 
 from .mat import HDF5_AT_512, matlab_signal, typed

@@ -24,7 +24,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
-from sdt_framework.data.readers import names
+from sdt_framework.signals.rules import names
 
 from .mat import NUMERIC
 

@@ -2,14 +2,15 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, orient, real
-from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.tokens import brief
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.rules import SignalInfo, as_acquisitions, orient, real
+from sdt_framework.signals.tokens import brief
 from sdt_framework.specs import ReaderSpec
 
 
@@ -38,6 +39,20 @@ def read(path: Path, variable: str | None) -> np.ndarray:
     return as_acquisitions(path, _load(path))
 
 
+def count(path: Path, variable: str | None) -> int | None:
+    """Values in the array, from the header alone (a file too large to map is sized too)."""
+    with path.open("rb") as handle:
+        version = np.lib.format.read_magic(handle)
+        read_header = {
+            (1, 0): np.lib.format.read_array_header_1_0,
+            (2, 0): np.lib.format.read_array_header_2_0,
+        }.get(version)
+        if read_header is None:
+            return None
+        shape = read_header(handle)[0]
+    return math.prod(shape)
+
+
 @hookimpl
 def register_signal_readers(register):
     """Register the NPY reader."""
@@ -52,5 +67,6 @@ def register_signal_readers(register):
             scan=scan,
             probe=probe,
             read=read,
+            count=count,
         )
     )

@@ -33,16 +33,16 @@ from typing import Any
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import (
+from sdt_framework.errors import InternalError
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.rules import (
     SignalInfo,
     as_acquisitions,
     increment_rate,
     note_unstated_units,
     pick,
 )
-from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.tokens import brief, quote
-from sdt_framework.errors import InternalError
+from sdt_framework.signals.tokens import brief, quote
 from sdt_framework.specs import ReaderSpec
 
 

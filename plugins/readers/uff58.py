@@ -27,16 +27,16 @@ from typing import Any
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import (
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.file_sizes import check_parse_size
+from sdt_framework.signals.rules import (
     SignalInfo,
     as_acquisitions,
     increment_rate,
     note_unstated_units,
     pick,
 )
-from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_sizes import check_parse_size
-from sdt_framework.data.tokens import brief
+from sdt_framework.signals.tokens import brief
 from sdt_framework.specs import ReaderSpec
 
 #: where dataset 58 states units (record 9, the ordinate axis units label)

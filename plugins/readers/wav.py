@@ -4,7 +4,7 @@ Integer PCM of 8 to 32 bits (24-bit and 20-bit in 3-byte containers as
 recorders write them) and 32/64-bit float; RIFF, big-endian RIFX, RF64 and
 WAVE_FORMAT_EXTENSIBLE headers; any extra chunk (``PEAK``, Broadcast WAV
 ``bext``, ``LIST``) is skipped. The rate is the header's (the ``fmt`` chunk's
-sample rate), refused outside :data:`~sdt_framework.data.readers.RATE_RANGE_HZ`.
+sample rate), refused outside :data:`~sdt_framework.signals.rules.RATE_RANGE_HZ`.
 A compressed encoding (u-law, ADPCM...) is refused: it is not the recorded
 signal. A file shorter than its RIFF header declares was cut short and is
 refused, naming both sizes (libsndfile would read what is left).
@@ -36,10 +36,10 @@ from pathlib import Path
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions, checked_rate, pick
-from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.tokens import brief, quote
 from sdt_framework.errors import SDTError
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.rules import SignalInfo, as_acquisitions, checked_rate, pick
+from sdt_framework.signals.tokens import brief, quote
 from sdt_framework.specs import ReaderSpec
 
 #: frames read at a time: one block of every channel (8 channels: 4 MB as int32 or 8 MB float)

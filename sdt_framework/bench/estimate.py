@@ -48,10 +48,10 @@ import os
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from ..data import sizes as host
 from ..data.recording import Recording
-from ..data.sizes import human_bytes
 from ..features import samples_for
+from ..signals import sizes as host
+from ..signals.sizes import human_bytes
 from ..specs import SensorSpec
 from ..stages import has_tolerances
 from .plan import Plan

@@ -30,8 +30,8 @@ from pathlib import Path
 
 import pandas as pd
 
-from ..data.sizes import building
 from ..registry import Registry
+from ..signals.sizes import building
 from . import runner
 from .config import BenchmarkConfig
 from .estimate import Estimate

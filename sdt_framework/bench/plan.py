@@ -22,7 +22,7 @@ from typing import Any
 
 import pandas as pd
 
-from ..data.open import open_dataset
+from ..data.open import load_dataset, open_dataset
 from ..data.recording import Dataset, Recording
 from ..errors import SDTError
 from ..features import resolve_feature_set
@@ -244,7 +244,7 @@ def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
             spec = registry.dataset(config.dataset)
             if spec.requires_path and not data:
                 raise SDTError(f"dataset {config.dataset!r} needs --data PATH")
-            return spec.loader(data, **options)
+            return load_dataset(registry, spec, data, **options)
         return open_dataset(registry, data or "synthetic-pump", **options)
     except TypeError as exc:
         if "unexpected keyword argument" not in str(exc):

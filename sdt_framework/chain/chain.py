@@ -20,7 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ..arguments import check_real, check_seed, check_spec
 from ..specs import SensorSpec
-from ..stages import bind_listed, build_extra, place
+from ..stages import build_extra, place, require_bound
 from .checks import check_node, check_rates, check_signal
 from .filters import design_lowpass
 from .stages import LowPass, Quantise, RunContext, Sample, Stage, WhiteNoise
@@ -166,12 +166,13 @@ def compile_chain(sensor: SensorSpec, fs: float, *, label: str = "") -> Chain:
 
     A sensor at the 'native' rate takes ``fs`` as its rate. Raises
     :class:`~sdt_framework.chain.ChainInputError` if the target rate is above
-    ``fs`` or the digital cutoff is at or above the target Nyquist. Stages the
-    profile lists that no registry bound yet (a profile built in Python) are
-    bound by :func:`sdt_framework.stages.bind_listed` (in the default registry).
+    ``fs`` or the digital cutoff is at or above the target Nyquist; an
+    :class:`~sdt_framework.errors.SDTError` if the profile lists stages no
+    registry bound (a profile built in Python: ``Registry.bind`` it, or call
+    ``sdt_framework.degrade``, which binds it).
     """
     fs = check_rates(fs, sensor, label)
-    sensor = bind_listed(sensor)
+    sensor = require_bound(sensor)
     return _compile(_ByContent(sensor.at_rate(fs)), fs)
 
 

@@ -67,7 +67,7 @@ def degrade_command(
         --out ide_adxl345.npy   # the rate from the file's timestamps
     """
     from ..chain import degrade  # scipy.signal: imported on use so `sdt --help` starts fast
-    from ..data.signal_sizes import DEGRADE_BYTES_PER_SAMPLE
+    from ..signals.file_sizes import DEGRADE_BYTES_PER_SAMPLE
     from .guards import check_output_file, os_errors
     from .signal_io import SUFFIXES, open_input, save_array
 
@@ -216,7 +216,7 @@ def validate_noise_command(
 
       sdt validate-noise --sensor adxl345 --recording tests/data/endaq/SSX_Data.IDE --windows 4
     """
-    from ..data.sizes import Cost
+    from ..signals.sizes import Cost
     from ..validation import noise_check, plot_noise_check  # imported on use, as in degrade
     from ..validation.allan import allan_seconds
     from ..validation.allan_check import allan_check

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import time
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 
@@ -171,11 +171,12 @@ def inspect(
       sdt dataset inspect synthetic-pump
     """
     from ..data import open_dataset  # heavy (scipy, pyarrow): on use only
-    from ..data.ide import is_ide
+    from ..signals.files import channel_reader
     from .guards import os_errors
 
-    if is_ide(path_or_name):
-        _inspect_ide(path_or_name, as_json)
+    recorder = channel_reader(path_or_name, registry(ctx).signal_readers())
+    if recorder is not None:  # a file of channels (IDE)
+        _inspect_channels(recorder, path_or_name, as_json)
         return
     if _is_signal_file(path_or_name):
         inspect_file(ctx, path_or_name, as_json)
@@ -256,13 +257,13 @@ def _is_signal_file(path: str) -> bool:
 app.command("manifest")(manifest)
 
 
-def _inspect_ide(path: str, as_json: bool) -> None:
-    """Channels of an IDE file: parts, axes, units, samples, measured and median rates."""
-    from ..data.ide import read_channels
+def _inspect_channels(reader: Any, path: str, as_json: bool) -> None:
+    """Channels of a recorder file (IDE): parts, axes, units, samples, measured and median
+    rates."""
     from .guards import os_errors
 
     with os_errors(path):
-        channels, notes = read_channels(path)
+        channels, notes = reader.channels(path)
     for note in notes:
         err_console.print(f"note: {note}", markup=False, highlight=False, soft_wrap=True)
     for channel in channels:  # shown, and refused when the channel is read

@@ -62,7 +62,7 @@ def is_manifest_csv(path: Path) -> bool:
 
 def inspect_file(ctx: typer.Context, path: str, as_json: bool) -> None:
     """Every signal of one file: variable, rate and where it comes from, units, duration."""
-    from ..data.signal_files import scan_file
+    from ..signals.files import scan_file
     from .guards import os_errors
 
     with os_errors(path):

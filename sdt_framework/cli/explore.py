@@ -78,9 +78,9 @@ def explore(
     if sweep_file is None:
         raise typer.BadParameter("give a sweep file, or --example to print one", param_hint="SWEEP")
     from ..bench.interrupt import watch_interrupts
-    from ..data.sizes import building
     from ..explore.sweep_file import load_sweep
     from ..inputs import require_regular_file
+    from ..signals.sizes import building
 
     if strategy not in STRATEGIES:
         from ..errors import SDTError

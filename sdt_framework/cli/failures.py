@@ -9,7 +9,7 @@ for a problem the user can act on.
 - The environment's errors, :class:`OSError` (permission denied, read-only or full disk,
   a folder where a file is expected, a missing folder, HOME unusable) and
   :class:`MemoryError`: one line naming the path (for memory: the step that was
-  building, see :func:`sdt_framework.data.sizes.building`), the cause and what to
+  building, see :func:`sdt_framework.signals.sizes.building`), the cause and what to
   do, exit 2.
 - Anything else (an :class:`~sdt_framework.errors.InternalError`, or any other exception
   no code path expected) is a bug in sdt, never the user's mistake: one
@@ -84,11 +84,11 @@ def os_error_line(exc: OSError) -> str:
 def memory_error_line(exc: MemoryError) -> str:
     """One line for a MemoryError: what was being built when it ran out, and what to do.
 
-    The step is named by :func:`~sdt_framework.data.sizes.building` where it
+    The step is named by :func:`~sdt_framework.signals.sizes.building` where it
     was entered (the sweep design, its points, the benchmark's features); a
     MemoryError from elsewhere blames no particular input.
     """
-    from ..data.sizes import memory_cause
+    from ..signals.sizes import memory_cause
 
     detail = one_line(exc, 200) or "MemoryError"
     cause = memory_cause(exc)

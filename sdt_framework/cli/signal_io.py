@@ -1,7 +1,7 @@
 """Reading and writing signal arrays for the commands that take a signal file.
 
 A signal file is read through the registered readers, handed down from the
-command's registry (:func:`open_input`, :mod:`sdt_framework.data.one_signal`):
+command's registry (:func:`open_input`, :mod:`sdt_framework.signals.one_signal`):
 any registered format, with the rate and units the file holds, ``--fs`` only
 where it holds none, ``--signal`` where it holds several. Before reading,
 :func:`check_signal_size` sizes the job from the file's header (NPY, CSV,
@@ -28,7 +28,7 @@ from ..io import atomic_path
 from .common import err_console
 
 if TYPE_CHECKING:
-    from ..data import FileSignal
+    from ..signals import FileSignal
 
 __all__ = [
     "SUFFIXES",
@@ -68,12 +68,12 @@ def open_input(
 ) -> FileSignal:
     """The signal of ``path`` to read (any registered format), sized against the memory
     available at ``bytes_per_sample``; ``choices`` go to
-    :func:`~sdt_framework.data.one_signal.open_signal` (``signal``, ``rate_hz``, ``units``,
+    :func:`~sdt_framework.signals.one_signal.open_signal` (``signal``, ``rate_hz``, ``units``,
     ``options``, ``default_rate``). The reader's note is printed."""
-    from ..data import open_signal
+    from ..signals import open_signal
     from .guards import check_memory
 
-    check_signal_size(path, bytes_per_sample, advice)  # a CSV before it is parsed
+    check_signal_size(path, readers, bytes_per_sample, advice)  # a CSV before it is parsed
     signal = open_signal(path, readers, **choices)
     note(signal.info.note)
     check_memory(path, f"{signal.n_values:,} samples", signal.n_values * bytes_per_sample, advice)
@@ -107,19 +107,22 @@ def zero_motion_recording(
     reference_fs: float,
 ) -> tuple[NDArray[np.float64], float]:
     """(samples in g, rate) of ``sdt validate-noise --recording``: through its reader, the
-    rate the file's or --fs or the sensor's output rate; of an IDE file the ``axis`` of the
-    channel of the sensor's part (or --channel) unless --signal names one."""
+    rate the file's or --fs or the sensor's output rate; of a file of channels (IDE) the
+    ``axis`` of the channel of the sensor's part (or --channel) unless --signal names one."""
     from ..chain import compile_chain
-    from ..data.ide import inspect_ide, is_ide, part_channel
-    from ..data.signal_sizes import DEGRADE_BYTES_PER_SAMPLE
+    from ..signals.channels import axis_variable, part_channel
+    from ..signals.file_sizes import DEGRADE_BYTES_PER_SAMPLE
+    from ..signals.files import channel_reader
 
     if unit is not None and unit.lower() not in UNITS:
         raise SDTError(f"--unit {unit!r}: use one of {', '.join(UNITS)}")
-    if channel is not None and (signal is not None or not is_ide(path)):
+    recorder = channel_reader(path, readers)  # a file of channels (IDE): the part's channel
+    if channel is not None and (signal is not None or recorder is None):
         raise SDTError(f"{path}: --channel is for an .IDE recording without --signal; drop it")
-    if signal is None and is_ide(path):
-        chosen = part_channel(path, inspect_ide(path), spec.name) if channel is None else channel
-        signal = f"{chosen}:{axis}"
+    if signal is None and recorder is not None:
+        listed = recorder.channels(path)[0]
+        chosen = part_channel(path, listed, spec.name) if channel is None else channel
+        signal = axis_variable(chosen, axis)
     opened = open_input(
         path, readers, DEGRADE_BYTES_PER_SAMPLE, "cut the recording to a shorter stretch",
         signal=signal, rate_hz=fs, units=None if unit is None else unit.lower(),
@@ -135,7 +138,7 @@ def zero_motion_recording(
 
 def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> NDArray[np.float64]:
     """Convert a recording from ``unit`` (g, mg, m/s^2, or raw LSB times ``scale`` g/LSB) to g."""
-    from ..data.one_signal import TO_G
+    from ..signals.one_signal import TO_G
 
     if unit in TO_G:
         return x if unit == "g" else x * TO_G[unit]
@@ -146,26 +149,28 @@ def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> 
     raise SDTError(f"{label}: unknown unit {unit!r}; use one of {', '.join(UNITS)}")
 
 
-def check_signal_size(path: Path, bytes_per_sample: int, advice: str) -> None:
-    """Refuse the signal file ``path`` before reading it if its samples (from its header)
-    at ``bytes_per_sample`` each need more memory than is available."""
-    from ..data.signal_sizes import CSV_PARSE_BYTES_PER_SAMPLE, file_samples
+def check_signal_size(path: Path, readers: Sequence[Any], bytes_per_sample: int,
+                      advice: str) -> None:  # fmt: skip
+    """Refuse the signal file ``path`` before reading it if its samples (from its header,
+    through its reader) at ``bytes_per_sample`` each, plus what its reader's parse takes,
+    need more memory than is available."""
+    from ..signals.file_sizes import file_samples
+    from ..signals.files import reader_for
     from .guards import check_memory
 
-    samples = file_samples(path)
+    samples = file_samples(path, readers)
     if samples is not None:
-        if path.suffix.lower() == ".csv":
-            bytes_per_sample += CSV_PARSE_BYTES_PER_SAMPLE
+        bytes_per_sample += reader_for(path, readers).parse_bytes_per_value
         check_memory(path, f"{samples:,} samples", samples * bytes_per_sample, advice)
 
 
-def check_pair_size(pair: Path) -> None:
+def check_pair_size(pair: Path, readers: Sequence[Any]) -> None:
     """Refuse a paired recording (TOML pair or IDE file) that ``sdt twin check`` cannot hold.
 
     A TOML pair is sized from its two files' headers, an IDE file from its
     bytes; a pair that cannot be read this way is left to the loader's message.
     """
-    from ..data.signal_sizes import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
+    from ..signals.file_sizes import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
     from .guards import check_memory
 
     advice = "cut the recordings to a shorter stretch (a few minutes hold every band)"
@@ -183,7 +188,7 @@ def check_pair_size(pair: Path) -> None:
         files = [(pair.parent / s["file"], s.get("variable")) for s in sides]
     except (OSError, UnicodeError, ValueError, TypeError, KeyError):
         return  # the loader says what is wrong with the file
-    counts = [file_samples(file, variable) for file, variable in files]
+    counts = [file_samples(file, readers, variable) for file, variable in files]
     if None not in counts:
         samples = sum(c for c in counts if c is not None)
         check_memory(pair, f"{samples:,} samples", samples * TWIN_BYTES_PER_SAMPLE, advice)

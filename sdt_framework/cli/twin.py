@@ -103,7 +103,7 @@ def check(
     if plot is not None:
         formats = [f".{f}" for f in plot_formats()]
         check_output_file(plot, "--plot", formats, [pair], overwrite=overwrite)
-    check_pair_size(pair)  # from the files' headers, before reading them
+    check_pair_size(pair, registry(ctx).signal_readers())  # from the headers, before reading
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel,
                          reference_scale)  # fmt: skip
     result = check_twin(loaded, spec)

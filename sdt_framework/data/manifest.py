@@ -49,6 +49,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..inputs import not_regular
+from ..signals.tokens import quote
 from .manifest_checks import refuse_identical, refuse_shared_ids, refuse_signal_twice
 from .manifest_files import probe_row, reconcile
 from .manifest_table import ManifestRow, read_manifest_rows
@@ -60,7 +61,6 @@ from .recording import (
     Skipped,
     measurement_groups,
 )
-from .tokens import quote
 
 __all__ = ["REQUIRED", "UNITS_TO_G", "open_manifest"]
 
@@ -133,9 +133,9 @@ def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
 def open_manifest(
     path: str | os.PathLike[str],
     *,
+    readers: Sequence[Any],
     name: str = "manifest",
     validate: bool = False,
-    readers: Sequence[Any] | None = None,
 ) -> Dataset:
     """Open a manifest file; see the module docstring for its columns.
 
@@ -146,8 +146,8 @@ def open_manifest(
     validate
         Read every signal now so that bad files land in ``skipped``.
     readers
-        The signal readers (``ReaderSpec``) to read files with; default: the
-        registered ones (:mod:`sdt_framework.reader_table`).
+        The signal readers (``ReaderSpec``) to read files with, handed down by the
+        caller (``registry.signal_readers()``; ``load_dataset`` passes them).
     """
     manifest = Path(path).expanduser()
     columns, rows = read_manifest_rows(manifest)

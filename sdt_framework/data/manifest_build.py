@@ -3,7 +3,7 @@
 The template (:mod:`.manifest_pattern`, e.g.
 ``{machine}/{condition} {severity?}/{run}/{channel}.tdms``) gives each
 file's labels from its path. Each matched file is scanned by its registered
-reader (:func:`~sdt_framework.data.signal_files.scan_file`) and gives one
+reader (:func:`~sdt_framework.signals.files.scan_file`) and gives one
 row per signal it holds: its ``variable`` written as the file names it
 (spaces included: the manifest reader matches it so), the file's rate and
 units (a format that holds no rate takes ``rate_hz``). When the template
@@ -43,12 +43,12 @@ from typing import Any
 
 from ..csv_cells import escape_cell
 from ..errors import SDTError
+from ..signals.files import scan_file
+from ..signals.rules import SignalInfo, acceleration_units, fault_of
+from ..signals.tokens import quote
 from .manifest_ids import Matched, name_recordings
 from .manifest_pattern import compile_template
 from .manifest_walk import walk_tree
-from .readers import SignalInfo, acceleration_units, fault_of
-from .signal_files import scan_file
-from .tokens import quote
 
 __all__ = ["BuiltManifest", "build_manifest", "manifest_csv"]
 
@@ -150,12 +150,13 @@ def build_manifest(
     template: str,
     out_dir: Path,
     *,
+    readers: Sequence[Any],
     rate_hz: float | None = None,
     full_scale_g: float | None = None,
-    readers: Sequence[Any] | None = None,
 ) -> BuiltManifest:
-    """Rows for every file under ``folder`` that matches ``template``; paths relative to
-    ``out_dir`` (the manifest's folder) where they can be."""
+    """Rows for every file under ``folder`` that matches ``template``, read by ``readers``
+    (``registry.signal_readers()``, handed down); paths relative to ``out_dir`` (the
+    manifest's folder) where they can be."""
     compiled = compile_template(template)
     _positive("--rate-hz", rate_hz)
     _positive("--full-scale-g", full_scale_g)

@@ -21,9 +21,9 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import SDTError
+from ..signals.rules import SignalInfo
+from ..signals.tokens import quote
 from .manifest_table import ManifestRow
-from .readers import SignalInfo
-from .tokens import quote
 
 __all__ = ["refuse_identical", "refuse_shared_ids", "refuse_signal_twice"]
 

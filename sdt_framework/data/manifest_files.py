@@ -1,8 +1,8 @@
 """A manifest row against its file: the reader that reads it, and the rate and units the file holds.
 
 A manifest row names a file; the registered reader of that file
-(:func:`~sdt_framework.data.signal_files.reader_for`) says what it holds
-(:class:`~sdt_framework.data.readers.SignalInfo`). Where the file states a
+(:func:`~sdt_framework.signals.files.reader_for`) says what it holds
+(:class:`~sdt_framework.signals.rules.SignalInfo`). Where the file states a
 rate (TDMS ``wf_increment``, UFF58 ``abscissa_inc``, WAV header, LVM
 ``Delta_X``, IDE timestamps) or units, the row's own values must agree with
 it, within the reader's tolerance: a manifest that disagrees with its file is
@@ -13,19 +13,22 @@ the wrong rate is wrong throughout. A row may leave ``sampling_rate_hz`` or
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from ..errors import SDTError
-from .readers import SignalInfo, acceleration_units
-from .recording import DataFileError
-from .signal_files import reader_for
-from .tokens import quote
+from ..signals.errors import DataFileError
+from ..signals.files import reader_for
+from ..signals.rules import SignalInfo, acceleration_units
+from ..signals.tokens import quote
 
 __all__ = ["probe_row", "reconcile"]
 
 
-def probe_row(fields: dict[str, Any], readers: Any) -> tuple[Any, SignalInfo, dict[str, str]]:
+def probe_row(
+    fields: dict[str, Any], readers: Sequence[Any]
+) -> tuple[Any, SignalInfo, dict[str, str]]:
     """(reader, signal, reader options) of a row; a bad file raises ``DataFileError``.
 
     The row's ``variable`` names the signal whose name is the same, spaces

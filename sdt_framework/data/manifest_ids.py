@@ -24,8 +24,8 @@ from dataclasses import dataclass, field
 from pathlib import Path, PurePosixPath
 
 from ..errors import SDTError
-from .readers import SignalInfo
-from .tokens import quote
+from ..signals.rules import SignalInfo
+from ..signals.tokens import quote
 
 __all__ = ["Matched", "name_recordings"]
 

@@ -38,7 +38,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from ..errors import SDTError
-from .tokens import quote
+from ..signals.tokens import quote
 
 __all__ = ["FIELDS", "Template", "compile_template"]
 

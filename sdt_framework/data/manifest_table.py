@@ -5,7 +5,7 @@ every problem can be named by its line: an empty (0-byte) file, bytes that
 are not UTF-8, a row with more or fewer fields than the header (a ragged row:
 pandas would stop with a tokenizer traceback or fill the gap silently), a
 repeated column name, a header with no row under it. Values quoted from the
-file are short tokens (:func:`~sdt_framework.data.tokens.quote`). A cell that
+file are short tokens (:func:`~sdt_framework.signals.tokens.quote`). A cell that
 sdt wrote spreadsheet-safe (``'=x`` for a label ``=x``,
 :mod:`sdt_framework.csv_cells`) reads back as the label.
 """
@@ -20,7 +20,7 @@ from pathlib import Path
 from ..csv_cells import unescape_cell
 from ..errors import SDTError
 from ..inputs import require_regular_file
-from .tokens import brief, quote
+from ..signals.tokens import brief, quote
 
 __all__ = ["ManifestRow", "read_manifest_rows"]
 

@@ -1,10 +1,10 @@
-"""The NLN-EMP CSV reader: parse and validate files with header ``time,0,1,...`` (pyarrow).
+"""The NLN-EMP CSV reader: files with header ``time,0,1,...``, read by the one CSV rule.
 
-The fast path is pyarrow's multi-threaded CSV reader with every column typed
-float64. pyarrow's errors do not say which row failed, so on failure the file
-is scanned once more, line by line, to find the first offending line: the
-error a user sees names the file, the line and what is wrong. Non-finite and
-empty values and an irregular time column are checked on the parsed arrays.
+The header is checked here (NLN-EMP's own layout: a time column, then one
+column per acquisition, named 0, 1, ...); the values are read by the rule
+every CSV signal goes through (:func:`sdt_framework.signals.read_csv_signal`:
+pyarrow, every value a finite number, the first bad line named by line and
+column); the time column's step is checked here.
 """
 
 from __future__ import annotations
@@ -14,12 +14,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import pyarrow as pa
-import pyarrow.csv as pacsv
 
-from .csv_bad_line import locate_problem
-from .recording import DataFileError
-from .tokens import quote
+from ..signals.csv_rule import read_csv_signal
+from ..signals.errors import DataFileError
+from ..signals.tokens import quote
 
 __all__ = ["CsvHeader", "parse_nln_csv", "read_header"]
 
@@ -91,29 +89,6 @@ def read_header(path: str | os.PathLike[str]) -> CsvHeader:
     return CsvHeader(tuple(columns), step, round((t_last - t0) / step) + 1)
 
 
-def _locate(path: Path, columns: list[str]) -> str:
-    """Scan the file to name the first ragged, non-UTF-8 or non-numeric line."""
-    found = locate_problem(path, len(columns), 2, [quote(c) for c in columns])
-    return found or "unreadable content"
-
-
-def _check_values(path: Path, table: pa.Table, columns: list[str]) -> np.ndarray:
-    data = np.empty((len(columns), table.num_rows), dtype=np.float64)
-    for i, name in enumerate(columns):
-        column = table.column(name)
-        if column.null_count:
-            row = int(np.flatnonzero(column.is_null().to_numpy(zero_copy_only=False))[0])
-            raise DataFileError(f"{path}: line {row + 2}, column {name!r}: empty value")
-        data[i] = column.to_numpy()
-    bad = ~np.isfinite(data)
-    if bad.any():
-        col, row = np.argwhere(bad)[0]
-        raise DataFileError(
-            f"{path}: line {row + 2}, column {columns[col]!r}: non-finite value {data[col, row]!r}"
-        )
-    return data
-
-
 def parse_nln_csv(path: str | os.PathLike[str], expected_step_s: float | None = None) -> np.ndarray:
     """Parse one NLN-EMP CSV into float64 (n_acquisitions, n_rows), checking every value.
 
@@ -133,19 +108,7 @@ def parse_nln_csv(path: str | os.PathLike[str], expected_step_s: float | None = 
     path = Path(path)
     with open(path, "rb") as handle:
         columns = _header(path, handle.readline())
-    try:
-        table = pacsv.read_csv(
-            path,
-            read_options=pacsv.ReadOptions(use_threads=True),
-            convert_options=pacsv.ConvertOptions(
-                column_types={name: pa.float64() for name in columns},
-                null_values=[""],
-                strings_can_be_null=False,
-            ),
-        )
-    except pa.ArrowInvalid:
-        raise DataFileError(f"{path}: {_locate(path, columns)}") from None
-    data = _check_values(path, table, columns)
+    data = read_csv_signal(path, columns).data  # the time column and every acquisition
     if data.shape[1] < 2:
         raise DataFileError(f"{path}: fewer than two data rows")
     time = data[0]

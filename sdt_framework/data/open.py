@@ -22,7 +22,16 @@ from ..inputs import require_regular_file
 from ..io import atomic_path
 from .recording import Dataset, Recording
 
-__all__ = ["open_dataset", "round_significant", "write_nln_emp"]
+__all__ = ["load_dataset", "open_dataset", "round_significant", "write_nln_emp"]
+
+
+def load_dataset(registry: Any, spec: Any, path: Any, **options: Any) -> Dataset:
+    """The dataset ``spec`` (a ``DatasetSpec``) loads from ``path`` with ``options``; a loader
+    that reads signal files (``reads_signal_files``: a manifest) is handed the readers of
+    ``registry`` as ``readers=``, so that nothing below looks a registry up."""
+    if spec.reads_signal_files and "readers" not in options:
+        options = {**options, "readers": registry.signal_readers()}
+    return spec.loader(path, **options)
 
 
 def open_dataset(registry: Any, path_or_name: str | os.PathLike[str], **options: Any) -> Dataset:
@@ -44,20 +53,17 @@ def open_dataset(registry: Any, path_or_name: str | os.PathLike[str], **options:
         spec = names[text]
         if spec.requires_path:
             raise SDTError(f"dataset {text!r} needs a path; give the folder or file instead")
-        return spec.loader(None, **options)
+        return load_dataset(registry, spec, None, **options)
     path = Path(text).expanduser()
     if path.is_dir():
         if (path / "Vibration").is_dir() or path.name == "Vibration":
-            return registry.dataset("nln-emp").loader(path, **options)
+            return load_dataset(registry, registry.dataset("nln-emp"), path, **options)
         raise SDTError(f"{path}: a folder without 'Vibration/'; expected an NLN-EMP root")
     if path.suffix.lower() in {".csv", ".parquet"}:
         require_regular_file(path, "manifest")
         if not path.is_file():
             raise SDTError(f"manifest {path} not found")
-        readers = getattr(registry, "signal_readers", None)  # a manifest reads with these
-        if readers is not None and "readers" not in options:
-            options = {**options, "readers": readers()}
-        return registry.dataset("manifest").loader(path, **options)
+        return load_dataset(registry, registry.dataset("manifest"), path, **options)
     raise SDTError(
         f"{text!r} is neither a registered dataset ({', '.join(sorted(names)) or 'none'}) "
         f"nor an NLN-EMP folder nor a .csv/.parquet manifest"

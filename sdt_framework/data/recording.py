@@ -18,25 +18,19 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import SDTError
+from ..signals.errors import DataFileError, SignalTypeError
 
-__all__ = ["DataFileError", "Dataset", "Recording", "Skipped", "measurement_groups"]
+__all__ = [
+    "DataFileError",
+    "Dataset",
+    "Recording",
+    "SignalTypeError",
+    "Skipped",
+    "measurement_groups",
+]
 
 #: consecutive 12 s acquisitions forming one 60 s measurement (SPEC section 4)
 ACQUISITIONS_PER_MEASUREMENT = 5
-
-
-class DataFileError(SDTError):
-    """A data file that cannot be used; the message names the file and the row."""
-
-
-class SignalTypeError(SDTError):
-    """A signal file holding booleans, complex numbers, text...: refused, never converted.
-
-    Unlike a :class:`DataFileError` (a missing or unreadable file, listed as
-    skipped), such a file was read: converting it would change the data
-    without a word (0/1 g, a dropped imaginary part), so the run stops.
-    """
 
 
 def measurement_groups(n_acquisitions: int) -> tuple[int, ...]:

@@ -23,7 +23,7 @@ import itertools
 import numpy as np
 import pandas as pd
 
-from ..data.sizes import building
+from ..signals.sizes import building
 from .designs import DESIGNS
 from .size import design_size
 from .sweep import INTEGER_FIELDS, Axis, Sweep, axis_levels

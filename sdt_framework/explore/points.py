@@ -21,8 +21,8 @@ from dataclasses import dataclass
 import pandas as pd
 from pydantic import ValidationError
 
-from ..data.sizes import building
 from ..errors import field_errors
+from ..signals.sizes import building
 from ..specs import SensorSpec
 from .stage_axes import StageAxis, require
 from .stage_values import with_stage_values

@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 
 from ..bench.config import BenchmarkConfig
 from ..chain import degrade
-from ..data.open import open_dataset
+from ..data.open import load_dataset, open_dataset
 from ..data.recording import Recording
 from ..specs import SensorSpec
 from ..validation import NoiseCheck, noise_check
@@ -51,7 +51,7 @@ def open_config_dataset(config: BenchmarkConfig, registry: Any) -> list[Recordin
     """The recordings the benchmark used (same dataset, options, machines, channels)."""
     options = dict(config.dataset_options)
     if config.dataset:
-        dataset = registry.dataset(config.dataset).loader(config.data, **options)
+        dataset = load_dataset(registry, registry.dataset(config.dataset), config.data, **options)
     else:
         dataset = open_dataset(registry, config.data or "synthetic-pump", **options)
     recordings = dataset.recordings()

@@ -36,9 +36,8 @@ def row_noise_ids(X: np.ndarray) -> list[int]:
 
 
 def _resolve_sensor(sensor: str | SensorSpec) -> SensorSpec:
-    if isinstance(sensor, SensorSpec):
-        return sensor
-    return resolve(SensorSpec, str(sensor), "sensor")
+    """The profile (its listed stages bound in the default registry), or the named one."""
+    return resolve(SensorSpec, sensor if isinstance(sensor, SensorSpec) else str(sensor), "sensor")
 
 
 class SensorTwin(ClassNamePrefixFeaturesOutMixin, TransformerMixin, BaseEstimator):

@@ -10,8 +10,8 @@ StageUse, Tolerance
 bind_stages(sensor, table), is_random(sensor), uses_node(sensor)
     Bind a profile's stages to the registered specs; whether its chain is
     random; whether it reads a triaxial node's other axes.
-bind_listed(sensor), install_stage_binder(binder)
-    Bind a profile built in Python with the binder the registry installed.
+require_bound(sensor)
+    ``sensor`` if its stages are bound (the chain's check; a registry binds).
 draw_unit(sensor, seed, k)
     Unit k of a sensor, drawn from its tolerances.
 row_normals(ctx, label, rows, n), TemperatureProfile
@@ -21,15 +21,7 @@ row_normals(ctx, label, rows, n), TemperatureProfile
 from __future__ import annotations
 
 from ..specs.stage_use import StageUse, Tolerance
-from .bind import (
-    bind_listed,
-    bind_stages,
-    build_extra,
-    install_stage_binder,
-    is_random,
-    place,
-    uses_node,
-)
+from .bind import bind_stages, build_extra, is_random, place, require_bound, uses_node
 from .draws import row_normals
 from .spec import ANCHORS, StageContext, StageSpec
 from .temperature import TemperatureProfile
@@ -43,14 +35,13 @@ __all__ = [
     "TemperatureProfile",
     "Tolerance",
     "base_name",
-    "bind_listed",
     "bind_stages",
     "build_extra",
     "draw_unit",
     "has_tolerances",
-    "install_stage_binder",
     "is_random",
     "place",
+    "require_bound",
     "row_normals",
     "uses_node",
 ]

@@ -7,39 +7,36 @@ stage. :func:`place` merges the bound stages with the chain's own stages in
 the order :data:`~sdt_framework.stages.spec.ANCHORS` fixes.
 
 A profile built in Python (``SensorSpec.model_validate({...})``) lists stages
-no registry bound yet. :func:`bind_listed` binds them with the binder the
-layer above installed (:mod:`sdt_framework.registry` installs its
-``default_registry().bind`` when imported, which ``sdt_framework.api`` and
-the registry's users do), so the chain below the registry never imports it.
-sdt's own commands never rely on it: a worker process imports only what it
-unpickles, so the benchmark binds every stage where the sensor or its drawn
-unit is made (:func:`~sdt_framework.stages.draw_unit` takes the stage table).
+no registry bound yet; the chain, below the registry, never binds them itself
+(:func:`require_bound` refuses them, naming how to bind): the caller that
+holds a registry binds (``Registry.bind``; ``sdt_framework.degrade`` binds in
+the default registry). No registry installs a binder here: sdt's own commands
+bind every stage where the sensor or its drawn unit is made (a worker process
+imports only what it unpickles; :func:`~sdt_framework.stages.draw_unit` takes
+the stage table).
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from pydantic import ValidationError
 
-from ..errors import InternalError, SDTError, UnknownNameError, validation_summary
+from ..errors import SDTError, UnknownNameError, validation_summary
 from ..specs import SensorSpec
 from ..specs.stage_use import StageUse
 from .spec import ANCHORS, StageContext, StageSpec
 
 __all__ = [
-    "bind_listed",
     "bind_stages",
     "build_extra",
-    "install_stage_binder",
     "is_random",
     "place",
+    "require_bound",
     "uses_node",
 ]
-
-_binder: Callable[[SensorSpec], SensorSpec] | None = None
 
 
 def _check(sensor: str, use: StageUse, spec: StageSpec) -> dict[str, Any]:
@@ -111,31 +108,24 @@ def bind_stages(sensor: SensorSpec, table: Mapping[str, StageSpec]) -> SensorSpe
     return sensor.model_copy(update={"stages": tuple(bound)})
 
 
-def install_stage_binder(binder: Callable[[SensorSpec], SensorSpec]) -> None:
-    """Bind the unbound stages of a profile with ``binder`` from now on (the registry's)."""
-    global _binder
-    _binder = binder
-
-
-def bind_listed(sensor: SensorSpec) -> SensorSpec:
-    """``sensor`` with every listed stage bound: as is if bound, else by the installed binder.
+def require_bound(sensor: SensorSpec) -> SensorSpec:
+    """``sensor`` if every stage it lists is bound to its spec; else refused, naming them.
 
     Raises
     ------
-    InternalError
-        Unbound stages and no binder installed (``sdt_framework.registry`` not
-        imported in this process): sdt binds what it runs, so inside sdt this is
-        a bug; a script calling the chain directly binds with ``Registry.bind``.
+    SDTError
+        Unbound stages (a profile built in Python, not looked up in a registry):
+        bind it first with ``Registry.bind(sensor)``, or call
+        ``sdt_framework.degrade``, which binds in the default registry.
     """
-    if all(use.spec is not None for use in sensor.stages):
-        return sensor
-    if _binder is None:
-        unbound = [use.name for use in sensor.stages if use.spec is None]
-        raise InternalError(
+    unbound = [use.name for use in sensor.stages if use.spec is None]
+    if unbound:
+        raise SDTError(
             f"sensor {sensor.name!r} lists stages {unbound} no registry bound in this process "
-            f"(pid {os.getpid()}); bind it first with Registry.bind(sensor)"
+            f"(pid {os.getpid()}); bind it first with Registry.bind(sensor), or call "
+            f"sdt_framework.degrade, which binds it in the default registry"
         )
-    return _binder(sensor)
+    return sensor
 
 
 def is_random(sensor: SensorSpec) -> bool:

@@ -1,10 +1,13 @@
 """A paired recording: the reference and the device signals, each on its own even grid.
 
-From an enDAQ IDE file, the device is the acceleration channel whose sensor
-table names the part the twin models (``ADXL345 ...`` for ``adxl345`` or a
-profile fitted from it), the reference the fastest other acceleration channel
-(the piezo); either can be named by channel id. Only the x/y/z subchannels
-are used (a microphone subchannel is not an axis).
+A pair is a TOML file naming two signal files (:mod:`.pair_toml`), or one
+recorder file of several channels (an enDAQ IDE file): any file whose reader,
+among those the caller hands down, lists channels
+(:mod:`sdt_framework.signals.channels`). There the device is the acceleration
+channel whose sensor table names the part the twin models (``ADXL345 ...``
+for ``adxl345`` or a profile fitted from it), the reference the fastest other
+acceleration channel (the piezo); either can be named by channel id. Only the
+x/y/z subchannels are used (a microphone subchannel is not an axis).
 """
 
 from __future__ import annotations
@@ -13,18 +16,19 @@ import os
 from collections.abc import Sequence
 from typing import Any
 
-from ..data.ide import IdeChannel, accelerometers, inspect_ide, is_ide, matches_part, read_ide
-from ..data.readers import RATE_RANGE_HZ
 from ..errors import SDTError
 from ..inputs import require_regular_file
+from ..signals.channels import Channel, accelerometers, matches_part
+from ..signals.files import channel_reader
+from ..signals.rules import RATE_RANGE_HZ
 from .pair_toml import is_pair_toml, load_toml_pair
 from .signals import Pair, Signal, chosen_axes, digest, unit_mistake
 
 __all__ = ["Pair", "Signal", "load_pair"]
 
 
-def _pick(path: str, channels: list[IdeChannel], sensor: str, device: int | None,
-          reference: int | None) -> tuple[IdeChannel, IdeChannel]:  # fmt: skip
+def _pick(path: str, channels: list[Channel], sensor: str, device: int | None,
+          reference: int | None) -> tuple[Channel, Channel]:  # fmt: skip
     listed = ", ".join(f"{c.id} ({', '.join(c.parts) or c.name})" for c in channels)
     by_id = {c.id: c for c in channels}
     for given, what in ((device, "device"), (reference, "reference")):
@@ -51,8 +55,8 @@ def _pick(path: str, channels: list[IdeChannel], sensor: str, device: int | None
     return by_id[reference], by_id[device]
 
 
-def _signal(path: str, channel: IdeChannel, axes: list[str]) -> Signal:
-    read = read_ide(path, channel.id, axes)
+def _signal(reader: Any, path: str, channel: Channel, axes: list[str]) -> Signal:
+    read = reader.read_channel(path, channel.id, axes)
     part = ", ".join(channel.parts) or None
     return Signal(f"channel {channel.id}", part, tuple(axes), read.values, read.rate_hz,
                   read.start_s, read.note, read.rate_sd_hz)  # fmt: skip
@@ -62,25 +66,22 @@ def load_pair(
     path: str | os.PathLike[str],
     sensor: str,
     *,
+    readers: Sequence[Any],
     axes: list[str] | None = None,
     device_channel: int | None = None,
     reference_channel: int | None = None,
-    readers: Sequence[Any] | None = None,
 ) -> Pair:
-    """The pair at ``path`` for the twin of ``sensor`` (a profile name): an IDE file, or a
-    TOML pair file naming two signals (:mod:`.pair_toml`), read by ``readers``
-    (``registry.signal_readers()``, needed for a TOML pair)."""
+    """The pair at ``path`` for the twin of ``sensor`` (a profile name): a recorder file of
+    channels (IDE), or a TOML pair file naming two signals (:mod:`.pair_toml`), read by
+    ``readers`` (``registry.signal_readers()``, handed down)."""
     path = str(path)
     require_regular_file(path, "paired recording")  # a device or a pipe, named as such
     if is_pair_toml(path):
         if device_channel is not None or reference_channel is not None:
             raise SDTError(f"{path}: a TOML pair names its signals; channel options are for IDE")
-        return _checked(load_toml_pair(path, axes, readers))
-    if not is_ide(path):
-        raise SDTError(
-            f"{path}: not an enDAQ IDE file (.IDE) nor a pair file (.toml); give a paired recording"
-        )
-    channels = accelerometers(inspect_ide(path))
+        return _checked(load_toml_pair(path, readers, axes))
+    reader = _channel_reader(path, readers)
+    channels = accelerometers(reader.channels(path)[0])
     ref, dev = _pick(path, channels, sensor, device_channel, reference_channel)
     chosen = chosen_axes(
         path,
@@ -90,8 +91,25 @@ def load_pair(
         f"both channels {ref.id} and {dev.id}",
     )
     return _checked(
-        Pair(path, _signal(path, ref, chosen), _signal(path, dev, chosen), digest(path))
+        Pair(
+            path,
+            _signal(reader, path, ref, chosen),
+            _signal(reader, path, dev, chosen),
+            digest(path),
+        )
     )
+
+
+def _channel_reader(path: str, readers: Sequence[Any]) -> Any:
+    """The reader of ``path`` if its files hold channels, else refused."""
+    reader = channel_reader(path, readers)
+    if reader is None:
+        formats = [f"{r.label}: {', '.join(r.suffixes)}" for r in readers if r.channels]
+        raise SDTError(
+            f"{path}: not a recorder file of channels ({'; '.join(formats) or 'none registered'})"
+            f" nor a pair file (.toml); give a paired recording"
+        )
+    return reader
 
 
 #: the two sides of one recording last about as long: a larger ratio is a unit mistake

@@ -17,13 +17,13 @@ Two tables, ``[reference]`` and ``[device]``, each naming one signal::
     start_s = 0.0                 # time of the first sample on the reference's clock
 
 A file is read by its registered reader (handed down by the caller, as
-``sdt degrade`` reads one: :mod:`sdt_framework.data.one_signal`): ``rate_hz``
+``sdt degrade`` reads one: :mod:`sdt_framework.signals.one_signal`): ``rate_hz``
 and ``units`` are needed only where the file holds none (a TDMS, WAV, UFF58,
 LVM or IDE file states its rate), and are refused naming both values where
 they contradict it; ``variable`` names the signal of a file holding several.
 A signal with a time column gets the same treatment as an IDE channel: its
 rate measured from the timestamps, resampled onto an even grid with a note
-when they stray (:mod:`sdt_framework.data.timebase`).
+when they stray (:mod:`sdt_framework.signals.timebase`).
 """
 
 from __future__ import annotations
@@ -35,11 +35,11 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, FiniteFloat, model_validator
 
-from ..data.csv_signal import read_csv_signal
-from ..data.one_signal import TO_G, open_signal
-from ..data.recording import DataFileError
-from ..data.timebase import on_even_grid
-from ..errors import ArgumentValueError, SDTError
+from ..errors import SDTError
+from ..signals.csv_rule import read_csv_signal
+from ..signals.errors import DataFileError
+from ..signals.one_signal import TO_G, open_signal
+from ..signals.timebase import on_even_grid
 from ..toml_files import read_toml, validate_file
 from .signals import Pair, Signal, chosen_axes, digest
 
@@ -160,17 +160,10 @@ def _signal(folder: Path, side: str, spec: PairSignal, readers: Sequence[Any]) -
                   even.start_s + spec.start_s, even.note, even.rate_sd_hz)  # fmt: skip
 
 
-def load_toml_pair(
-    path: str | Path, axes: list[str] | None = None, readers: Sequence[Any] | None = None
-) -> Pair:
+def load_toml_pair(path: str | Path, readers: Sequence[Any], axes: list[str] | None = None) -> Pair:
     """The pair described by the TOML file at ``path``, on the axes both sides share; its
-    files read by ``readers`` (``registry.signal_readers()``)."""
+    files read by ``readers`` (``registry.signal_readers()``, handed down)."""
     path = Path(path)
-    if readers is None:
-        raise ArgumentValueError(
-            f"{path}: a pair file's signals are read by the registered readers; pass "
-            f"readers=registry.signal_readers()"
-        )
     parsed = validate_file(_PairFile, read_toml(path, what="pair file"), path)
     try:
         ref = _signal(path.parent, "reference", parsed.reference, readers)

@@ -98,7 +98,7 @@ def test_axes_must_name_channels_of_the_data(small_config, registry):
         plan_benchmark(small_config(axes={"ch9": "z"}), registry)
 
 
-def test_a_channel_on_the_z_axis_gets_the_z_noise(tmp_path, registry):
+def test_a_channel_on_the_z_axis_gets_the_z_noise(tmp_path, registry, readers):
     """ADXL345: 290 ug/sqrt(Hz) on X, 430 on Z (datasheet p. 33); zero motion shows the ratio."""
     fs = 20000.0
     np.save(tmp_path / "zero.npy", np.zeros((4, int(2 * fs))))
@@ -106,7 +106,7 @@ def test_a_channel_on_the_z_axis_gets_the_z_noise(tmp_path, registry):
         "path,sampling_rate_hz,condition,severity,recording_id,channel\n"
         f"zero.npy,{fs:g},healthy,,r1,ch1\n"
     )
-    [recording] = open_manifest(tmp_path / "m.csv").recordings()
+    [recording] = open_manifest(tmp_path / "m.csv", readers=readers).recordings()
     part = registry.sensor("adxl345-ds")
     feature_set = registry.feature_set("paper8")
 

@@ -34,7 +34,7 @@ def write(folder: Path, rows: list[str], header: str = HEADER) -> Path:
     return path
 
 
-def test_formats_units_and_grouping(folder: Path) -> None:
+def test_formats_units_and_grouping(folder: Path, readers) -> None:
     manifest = write(
         folder,
         [
@@ -44,7 +44,7 @@ def test_formats_units_and_grouping(folder: Path) -> None:
             f"{folder / 'signals' / 'd.csv'},1000,bearing,2,run-2,z,rig,m/s^2,x",
         ],
     )
-    ds = open_manifest(manifest)
+    ds = open_manifest(manifest, readers=readers)
     recs = {r.recording_id: r for r in ds.recordings()}
     assert set(recs) == {"rig/run-1/x", "rig/run-2/y", "rig/run-2/z"}  # machine/run/channel
     x = recs["rig/run-1/x"]
@@ -59,7 +59,7 @@ def test_formats_units_and_grouping(folder: Path) -> None:
     assert ds.skipped == [] and set(ds.runs()) == {"rig/run-1", "rig/run-2"}
 
 
-def test_missing_file_is_skipped_with_row(folder: Path) -> None:
+def test_missing_file_is_skipped_with_row(folder: Path, readers) -> None:
     manifest = write(
         folder,
         [
@@ -67,14 +67,14 @@ def test_missing_file_is_skipped_with_row(folder: Path) -> None:
             "signals/gone.npy,1000,healthy,,run-2,x,rig,g,",
         ],
     )
-    ds = open_manifest(manifest)
+    ds = open_manifest(manifest, readers=readers)
     assert [r.run for r in ds.recordings()] == ["run-1"]
     (skip,) = ds.skipped
     assert "gone.npy" in skip.path and "line 3" in skip.reason and "not found" in skip.reason
     assert ds.describe()["summary"]["skipped"] == 1
 
 
-def test_non_finite_value_reported_and_others_load(folder: Path) -> None:
+def test_non_finite_value_reported_and_others_load(folder: Path, readers) -> None:
     values = np.zeros(100)
     values[42] = np.nan
     np.save(folder / "signals" / "nan.npy", values)
@@ -85,7 +85,7 @@ def test_non_finite_value_reported_and_others_load(folder: Path) -> None:
             "signals/a.npy,1000,healthy,,run-2,x,rig,g,",
         ],
     )
-    ds = open_manifest(manifest, validate=True)
+    ds = open_manifest(manifest, readers=readers, validate=True)
     assert [r.run for r in ds.recordings()] == ["run-2"]
     (skip,) = ds.skipped
     assert "nan.npy" in skip.reason and "sample 42" in skip.reason
@@ -101,12 +101,14 @@ def test_non_finite_value_reported_and_others_load(folder: Path) -> None:
         (HEADER.replace("channel,", ""), "signals/a.npy,1000,h,,r,rig,g,", "'channel'"),
     ],
 )
-def test_bad_fields_are_user_errors(folder: Path, header: str, row: str, field: str) -> None:
+def test_bad_fields_are_user_errors(
+    folder: Path, header: str, row: str, field: str, readers
+) -> None:
     with pytest.raises(SDTError, match=field):
-        open_manifest(write(folder, [row], header))
+        open_manifest(write(folder, [row], header), readers=readers)
 
 
-def test_parquet_manifest(folder: Path) -> None:
+def test_parquet_manifest(folder: Path, readers) -> None:
     path = folder / "m.parquet"
     pd.DataFrame(
         {
@@ -118,7 +120,7 @@ def test_parquet_manifest(folder: Path) -> None:
             "channel": ["x"],
         }
     ).to_parquet(path)
-    (rec,) = open_manifest(path).recordings()
+    (rec,) = open_manifest(path, readers=readers).recordings()
     assert (rec.machine, rec.units, rec.severity, rec.sampling_rate_hz) == (
         "machine",
         "g",

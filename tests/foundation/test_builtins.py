@@ -26,6 +26,7 @@ def plugin_modules() -> list[str]:
             continue
         if "def register_" in path.read_text():
             parts = path.relative_to(ROOT / "plugins").with_suffix("").parts
+            parts = parts[:-1] if parts[-1] == "__init__" else parts  # a plugin that is a package
             found.append(".".join(("sdt_plugins", *parts)))
     return found
 

@@ -172,8 +172,8 @@ def test_hook_register_stages():
 
 
 def test_hook_register_signal_readers(tmp_path):
-    from sdt_framework.data.readers import SignalInfo
-    from sdt_framework.data.signal_files import reader_for
+    from sdt_framework.signals.files import reader_for
+    from sdt_framework.signals.rules import SignalInfo
     from sdt_framework.specs import ReaderSpec
 
     def scan(path):

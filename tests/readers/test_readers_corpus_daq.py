@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_files import scan_file
+from sdt_framework.signals.files import scan_file
 
 from .daq_files import CATMAN, CORPUS, PSD
 

@@ -22,7 +22,7 @@ import pandas as pd
 import pytest
 
 from sdt_framework.data import open_synthetic
-from sdt_framework.data.signal_files import read_signal
+from sdt_framework.signals.files import read_signal
 
 from .daq_files import PSD, Channel, catman_uff, lvm_text
 
@@ -76,7 +76,9 @@ def _reference(file: Path, fmt: str) -> np.ndarray:
 
 
 @pytest.mark.parametrize(("fmt", "units"), [("lvm", "g"), ("uff", "m/s^2")])
-def test_a_daq_campaign_runs_manifest_then_benchmark(tmp_path, monkeypatch, sdt_main, fmt, units):
+def test_a_daq_campaign_runs_manifest_then_benchmark(
+    tmp_path, monkeypatch, sdt_main, fmt, units, readers
+):
     monkeypatch.setenv("SDT_CACHE_DIR", str(tmp_path / "cache"))
     root = tmp_path / fmt
     files = _campaign(root, fmt)
@@ -102,7 +104,7 @@ def test_a_daq_campaign_runs_manifest_then_benchmark(tmp_path, monkeypatch, sdt_
             expected = reference[:, : len(reference[0]) // (1 + half), int(half)]
         else:
             expected = reference[[int(row["variable"]) - 1]]
-        np.testing.assert_array_equal(read_signal(file, row["variable"]), expected)
+        np.testing.assert_array_equal(read_signal(file, readers, row["variable"]), expected)
     code, out, err = sdt_main("benchmark", "--data", str(manifest), *ARGS,
                               "--out", str(tmp_path / "out"))  # fmt: skip
     assert code == 0, err

@@ -22,7 +22,7 @@ import pytest
 from sdt_plugins.readers.lvm_layout import printed_tolerance
 
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_files import read_signal
+from sdt_framework.signals.files import read_signal
 
 from .daq_files import CORPUS, Channel, lvm_text
 
@@ -62,7 +62,7 @@ def test_a_decimated_copy_of_a_real_recording_that_kept_its_header(sdt_main, tmp
     )
 
 
-def test_a_header_rate_256_times_the_x_column_is_refused_not_read(sdt_main, tmp_path):
+def test_a_header_rate_256_times_the_x_column_is_refused_not_read(sdt_main, tmp_path, readers):
     """Samples 1,024 (a first write) over 2,048 rows stepping 5 ms: main read it at 51.2 kHz."""
     x = np.arange(2048) * 0.005
     channel = Channel("acc", _values(2048), 1 / 51_200, x=x, samples=1024)
@@ -76,20 +76,20 @@ def test_a_header_rate_256_times_the_x_column_is_refused_not_read(sdt_main, tmp_
     )
     assert "and its Samples says 1,024 where the segment holds 2,048 rows" in line
     with pytest.raises(DataFileError, match="the header does not describe these samples"):
-        read_signal(file, "acc")
+        read_signal(file, readers, "acc")
     # the same rows under a header at their own rate read, X column and all
     file.write_text(lvm_text([[Channel("acc", channel.values, 0.005)]], layout="One"))
-    np.testing.assert_array_equal(read_signal(file, "acc")[0], channel.values)
+    np.testing.assert_array_equal(read_signal(file, readers, "acc")[0], channel.values)
 
 
-def test_x_values_printed_with_six_decimals_agree_with_their_delta_x(tmp_path):
+def test_x_values_printed_with_six_decimals_agree_with_their_delta_x(tmp_path, readers):
     """LabVIEW prints X with six decimals (0.000020 for 1.953125e-05 s, 2.4 % off per step):
     the check allows one unit of the sixth decimal, so a 51.2 kHz file written so reads."""
     x = np.round(np.arange(4096) / 51_200, 6)
     channel = Channel("acc", _values(4096), 1 / 51_200, x=x)
     file = tmp_path / "rec.lvm"
     file.write_text(lvm_text([[channel]]), encoding="utf-8")
-    np.testing.assert_array_equal(read_signal(file, "acc")[0], channel.values)
+    np.testing.assert_array_equal(read_signal(file, readers, "acc")[0], channel.values)
 
 
 def test_an_lvm_spectrum_is_refused_naming_its_x_dimension(sdt_main, tmp_path):
@@ -105,7 +105,7 @@ def test_an_lvm_spectrum_is_refused_naming_its_x_dimension(sdt_main, tmp_path):
     )
 
 
-def test_multi_time_columns_with_a_channel_shorter_than_the_other(sdt_main, tmp_path):
+def test_multi_time_columns_with_a_channel_shorter_than_the_other(sdt_main, tmp_path, readers):
     """LabVIEW's Multi layout: 'acc' at 20 kHz (2,048 rows), 'acc 2' at 10 kHz (1,024 rows, its
     cells empty below them). Each reads as lvm_read reads its column, at its own rate; main
     listed 'acc 2' at 2,048 samples and refused it when read (a non-finite value)."""
@@ -122,8 +122,8 @@ def test_multi_time_columns_with_a_channel_shorter_than_the_other(sdt_main, tmp_
     assert (signals["acc"]["n_samples"], signals["acc"]["rate_hz"]) == (2048, 20_000.0)
     segment = lvm_read.read(str(file), read_from_pickle=False, dump_file=False)[0]
     assert segment["Channel names"] == ["X_Value", "acc", "X_Value", "acc 2", "Comment"]
-    np.testing.assert_array_equal(read_signal(file, "acc")[0], segment["data"][:, 1])
-    np.testing.assert_array_equal(read_signal(file, "acc 2")[0], segment["data"][:1024, 3])
+    np.testing.assert_array_equal(read_signal(file, readers, "acc")[0], segment["data"][:, 1])
+    np.testing.assert_array_equal(read_signal(file, readers, "acc 2")[0], segment["data"][:1024, 3])
     assert np.isnan(segment["data"][1024:, 3]).all()
 
 
@@ -189,13 +189,13 @@ def test_a_channel_without_units_says_it_is_read_in_g(sdt_main, tmp_path):
     )
 
 
-def test_two_columns_of_one_name_are_refused_not_one_dropped(tmp_path):
+def test_two_columns_of_one_name_are_refused_not_one_dropped(tmp_path, readers):
     """Main kept the first column of a repeated name and dropped the other without a word."""
     file = tmp_path / "rec.lvm"
     same_name = [Channel("acc", _values(64), 5e-5), Channel("acc", _values(64, 1), 5e-5)]
     file.write_text(lvm_text([same_name]), encoding="utf-8")
     with pytest.raises(DataFileError, match="2 columns are named 'acc'; rename them"):
-        read_signal(Path(file), "acc")
+        read_signal(Path(file), readers, "acc")
 
 
 def test_a_column_name_row_without_x_value_is_named(sdt_main, tmp_path):

@@ -19,25 +19,27 @@ import pytest
 import scipy.io
 
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_files import read_signal, scan_file
+from sdt_framework.signals.files import read_signal, scan_file
 
 DATA = Path(__file__).parents[1] / "data" / "readers"
 CORPUS = DATA / "corpus"
 
 
-def test_v73_empty_arrays_are_listed_as_empty_not_as_their_dimensions(sdt_main):
+def test_v73_empty_arrays_are_listed_as_empty_not_as_their_dimensions(sdt_main, readers):
     file = CORPUS / "mat73-testfile15.mat"  # MATLAB: x_0 = [], x_10_0 = zeros(10, 0), ...
     with h5py.File(file) as handle:  # what main read as samples: the dimensions
         assert list(handle["x_10_0"][()]) == [10, 0] and handle["x_10_0"].attrs["MATLAB_empty"]
-    infos = {i.variable: i for i in scan_file(file)[1]}
+    infos = {i.variable: i for i in scan_file(file, readers)[1]}
     for name, size in [("x_0", "0 x 0"), ("x_0_10", "0 x 10"), ("x_10_0", "10 x 0")]:
         fault = f"{file}: variable '{name}' is an empty MATLAB double array ({size}): no samples"
         assert infos[name].fault == fault
         with pytest.raises(DataFileError) as caught:
-            read_signal(file, name)
+            read_signal(file, readers, name)
         assert str(caught.value) == fault
     with h5py.File(file) as handle:  # a 10 x 1 column beside them reads as before
-        np.testing.assert_array_equal(read_signal(file, "x_10")[0], handle["x_10"][()][:, 0])
+        np.testing.assert_array_equal(
+            read_signal(file, readers, "x_10")[0], handle["x_10"][()][:, 0]
+        )
     code, _, err = sdt_main("dataset", "inspect", str(file))
     assert code == 0
     assert "warning: listed, not read: " + infos["x_10_0"].fault in " ".join(err.split())
@@ -57,11 +59,11 @@ def _duplicated(file: Path) -> tuple[np.ndarray, np.ndarray]:
     return zeros, signal
 
 
-def test_a_v5_name_stored_twice_reads_as_the_copy_scipy_keeps(sdt_main, tmp_path):
+def test_a_v5_name_stored_twice_reads_as_the_copy_scipy_keeps(sdt_main, tmp_path, readers):
     file = tmp_path / "run.mat"
     _, signal = _duplicated(file)
     assert [name for name, _, _ in scipy.io.whosmat(file)] == ["acc", "acc", "rpm"]
-    infos = scan_file(file)[1]
+    infos = scan_file(file, readers)[1]
     assert [i.variable for i in infos] == ["acc", "rpm"]  # each name once
     assert infos[0].note == (
         f"{file}: variable 'acc' is stored 2 times (a writer that appends rather than "
@@ -69,40 +71,42 @@ def test_a_v5_name_stored_twice_reads_as_the_copy_scipy_keeps(sdt_main, tmp_path
     )
     with pytest.warns(scipy.io.matlab.MatReadWarning, match="Duplicate variable name"):
         kept = scipy.io.loadmat(file)["acc"]
-    np.testing.assert_array_equal(read_signal(file, "acc"), kept)
-    np.testing.assert_array_equal(read_signal(file, "acc")[0], signal)
+    np.testing.assert_array_equal(read_signal(file, readers, "acc"), kept)
+    np.testing.assert_array_equal(read_signal(file, readers, "acc")[0], signal)
     code, _, err = sdt_main("dataset", "inspect", str(file))
     assert code == 0 and "is stored 2 times" in err
 
 
-def test_a_v73_file_of_struct_arrays_lists_each_numeric_field(sdt_main):
+def test_a_v73_file_of_struct_arrays_lists_each_numeric_field(sdt_main, readers):
     """MATLAB's raw1, a 5 x 1 struct array: impulse responses raw1(k).h (49 x 4), gains."""
     file = CORPUS / "mat73-testfile2.mat"
     code, out, err = sdt_main("dataset", "inspect", str(file), "--json")
     assert code == 0, err
     assert '"raw1(2).h"' in out
-    infos = {i.variable: i for i in scan_file(file)[1]}
+    infos = {i.variable: i for i in scan_file(file, readers)[1]}
     assert {f"raw1({k}).h" for k in range(1, 6)} <= set(infos)
     assert infos["raw1(2).h"].shape == (4, 49) and infos["raw1(2).h"].fault is None
     assert "is complex (double)" in str(infos["raw1(1).HSmooth"].fault)
     with h5py.File(file) as handle:  # element 2 of the field h: a reference into #refs#
         expected = handle[handle["raw1"]["h"][()].ravel()[1]][()]
-    np.testing.assert_array_equal(read_signal(file, "raw1(2).h"), expected)
+    np.testing.assert_array_equal(read_signal(file, readers, "raw1(2).h"), expected)
 
 
-def test_v73_struct_fields_and_cell_elements_read_by_their_matlab_names():
+def test_v73_struct_fields_and_cell_elements_read_by_their_matlab_names(readers):
     """mat7.3's testfile1.mat (MATLAB): data.struct_.test, data.cell_{1}; text is not listed
     inside a struct; a struct's NaN is refused naming it as a number (item 13)."""
     file = DATA / "testfile1.mat"
-    infos = {i.variable: i for i in scan_file(file)[1]}
+    infos = {i.variable: i for i in scan_file(file, readers)[1]}
     assert "data.arr_char" not in infos and "data.string_" not in infos
     with h5py.File(file) as handle:
         test = handle["data"]["struct_"]["test"][()]
         cell = handle[handle["data"]["cell_"][()].ravel()[0]][()]
-    np.testing.assert_array_equal(read_signal(file, "data.struct_.test"), test.reshape(1, -1))
-    np.testing.assert_array_equal(read_signal(file, "data.cell_{1}"), cell.reshape(1, -1))
+    np.testing.assert_array_equal(
+        read_signal(file, readers, "data.struct_.test"), test.reshape(1, -1)
+    )
+    np.testing.assert_array_equal(read_signal(file, readers, "data.cell_{1}"), cell.reshape(1, -1))
     with pytest.raises(DataFileError) as caught:
-        read_signal(file, "data.arr_nan")
+        read_signal(file, readers, "data.arr_nan")
     assert str(caught.value).endswith("acquisition 0, sample 0: non-finite value nan")
 
 

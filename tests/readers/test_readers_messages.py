@@ -11,12 +11,12 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sdt_framework.data.readers import finite
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.tokens import shown
 from sdt_framework.edge.lora import symbol_time_s
 from sdt_framework.errors import SDTError
 from sdt_framework.features.windowing import cut_windows
+from sdt_framework.signals.rules import finite
+from sdt_framework.signals.tokens import shown
 
 
 def test_shown_gives_the_python_number_of_a_numpy_scalar():

@@ -12,7 +12,7 @@ from pathlib import Path
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, as_acquisitions
+from sdt_framework.signals.rules import SignalInfo, as_acquisitions
 from sdt_framework.specs import ReaderSpec
 
 

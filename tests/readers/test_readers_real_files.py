@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_files import reader_for, scan_file
+from sdt_framework.signals.files import reader_for, scan_file
 
 DATA = Path(__file__).parents[1] / "data" / "readers"
 

@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_files import read_signal, scan_file
+from sdt_framework.signals.files import read_signal, scan_file
 
 from .daq_files import CATMAN, CORPUS, PSD, catman_uff
 
@@ -66,7 +66,9 @@ def _psd(label: str | None) -> dict:
     ],
     ids=["no-units", "as-exported"],
 )  # fmt: skip
-def test_a_psd_beside_catman_time_histories_leaves_them_readable(sdt_main, tmp_path, label, note):
+def test_a_psd_beside_catman_time_histories_leaves_them_readable(
+    sdt_main, tmp_path, label, note, readers
+):
     """Two catman time histories, then a PSD appended by pyuff: the manifest holds both time
     histories and names the PSD it left out; each reads as pyuff reads it. On main a PSD with
     no units label (its increment 0, no rate) left the whole file out ("a UFF58 file holds no
@@ -98,7 +100,7 @@ def test_a_psd_beside_catman_time_histories_leaves_them_readable(sdt_main, tmp_p
     }
     sets = pyuff.UFF(str(file)).read_sets([0, 1])
     for number, dataset in enumerate(sets, start=1):
-        np.testing.assert_array_equal(read_signal(file, str(number))[0], dataset["data"])
+        np.testing.assert_array_equal(read_signal(file, readers, str(number))[0], dataset["data"])
 
 
 def _tdms(file: Path, channels: list[tuple[str, str, np.ndarray, dict]]) -> Path:
@@ -112,23 +114,23 @@ def _tdms(file: Path, channels: list[tuple[str, str, np.ndarray, dict]]) -> Path
 G = {"wf_increment": 1 / 25_600, "unit_string": "g"}
 
 
-def test_group_and_channel_names_holding_slashes_read_their_own_channel(tmp_path):
+def test_group_and_channel_names_holding_slashes_read_their_own_channel(tmp_path, readers):
     """A logger's group '2024/07/01 10:00' and a channel 'acc/x': each read is npTDMS's."""
     from nptdms import TdmsFile
 
     a, b = np.arange(4096.0), -np.arange(4096.0)
     file = _tdms(tmp_path / "log.tdms", [("2024/07/01 10:00", "acc/x", a, G),
                                          ("2024/07/01 10:00", "acc y", b, G)])  # fmt: skip
-    np.testing.assert_array_equal(read_signal(file, "2024/07/01 10:00/acc/x")[0], a)
-    np.testing.assert_array_equal(read_signal(file, "2024/07/01 10:00/acc y")[0],
+    np.testing.assert_array_equal(read_signal(file, readers, "2024/07/01 10:00/acc/x")[0], a)
+    np.testing.assert_array_equal(read_signal(file, readers, "2024/07/01 10:00/acc y")[0],
                                   TdmsFile.read(file)["2024/07/01 10:00"]["acc y"][:])  # fmt: skip
 
 
-def test_two_channels_joined_to_one_name_are_refused_naming_it(tmp_path):
+def test_two_channels_joined_to_one_name_are_refused_naming_it(tmp_path, readers):
     file = _tdms(tmp_path / "log.tdms", [("a/b", "c", np.zeros(64), G),
                                          ("a", "b/c", np.ones(64), G)])  # fmt: skip
     with pytest.raises(DataFileError, match=r"2 channels are named 'a/b/c' \(group and channel "):
-        read_signal(file, "a/b/c")
+        read_signal(file, readers, "a/b/c")
 
 
 @pytest.mark.parametrize(
@@ -159,7 +161,9 @@ def test_a_time_waveform_written_by_labview_reads(registry):
     assert [i.fault for i in infos] == [None, None]
 
 
-def test_a_channel_without_unit_string_is_named_in_inspect_and_manifest(sdt_main, tmp_path):
+def test_a_channel_without_unit_string_is_named_in_inspect_and_manifest(
+    sdt_main, tmp_path, readers
+):
     """LabVIEW's Digital_Input.tdms states no units: inspect names the channels it reads in g,
     `sdt dataset manifest` counts them, and the signals say so (units_stated)."""
     file = CORPUS / "npTDMS-Digital_Input.tdms"
@@ -183,5 +187,5 @@ def test_a_channel_without_unit_string_is_named_in_inspect_and_manifest(sdt_main
         "note: 1 signal states no units (their unit_string is empty), in 1 file (e.g. 'acc/x' "
         "in healthy/r1.tdms): written with units empty, which the manifest reads as g"
     ) in " ".join(err.split())
-    infos = {i.variable: i for i in scan_file(folder / "r1.tdms")[1]}
+    infos = {i.variable: i for i in scan_file(folder / "r1.tdms", readers)[1]}
     assert (infos["acc/x"].units_stated, infos["acc/y"].units_stated) == (False, True)

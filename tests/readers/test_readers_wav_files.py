@@ -17,7 +17,7 @@ import pytest
 import soundfile
 
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_files import read_signal, scan_file
+from sdt_framework.signals.files import read_signal, scan_file
 
 DATA = Path(__file__).parents[1] / "data" / "readers"
 CORPUS = DATA / "corpus"
@@ -36,7 +36,7 @@ def _counts_24bit(raw: bytes, channels: int) -> np.ndarray:
     return np.where(value >= 1 << 23, value - (1 << 24), value).reshape(-1, channels)
 
 
-def test_a_24_bit_wav_written_by_libsndfile_reads_in_g(tmp_path):
+def test_a_24_bit_wav_written_by_libsndfile_reads_in_g(tmp_path, readers):
     rng = np.random.default_rng(4)
     counts = rng.integers(-(2**23), 2**23, size=(4096, 3), dtype=np.int32)
     file = tmp_path / "rec.wav"
@@ -45,12 +45,12 @@ def test_a_24_bit_wav_written_by_libsndfile_reads_in_g(tmp_path):
     start = raw.index(b"data") + 8
     on_disk = _counts_24bit(raw[start : start + 4096 * 9], 3)
     np.testing.assert_array_equal(on_disk, counts)  # the writer stored the counts given
-    _, infos = scan_file(file, full_scale_g=8.0)
+    _, infos = scan_file(file, readers, full_scale_g=8.0)
     assert [(i.variable, i.label, i.rate_hz, i.units) for i in infos] == [
         (f"ch{k}", "PCM 24-bit", 25_600.0, "g") for k in (1, 2, 3)
     ]
     np.testing.assert_array_equal(
-        read_signal(file, "ch3", full_scale_g=8.0)[0], on_disk[:, 2] / 2.0**23 * 8.0
+        read_signal(file, readers, "ch3", full_scale_g=8.0)[0], on_disk[:, 2] / 2.0**23 * 8.0
     )
 
 
@@ -70,13 +70,13 @@ def test_a_field_recorders_broadcast_wav_is_listed_with_its_rate(sdt_main):
         ("test-44100Hz-be-1ch-4bytes.wav", DATA / "test-44100Hz-le-1ch-4bytes.wav"),
     ],
 )
-def test_big_endian_rifx_is_read_as_its_little_endian_riff_twin(name, twin):
+def test_big_endian_rifx_is_read_as_its_little_endian_riff_twin(name, twin, readers):
     """scipy's RIFX files hold the samples of their RIFF twins, byte-swapped."""
-    _, infos = scan_file(CORPUS / name, full_scale_g=1.0)
+    _, infos = scan_file(CORPUS / name, readers, full_scale_g=1.0)
     for info in infos:
         np.testing.assert_array_equal(
-            read_signal(CORPUS / name, info.variable, full_scale_g=1.0),
-            read_signal(twin, info.variable, full_scale_g=1.0),
+            read_signal(CORPUS / name, readers, info.variable, full_scale_g=1.0),
+            read_signal(twin, readers, info.variable, full_scale_g=1.0),
         )
 
 
@@ -104,7 +104,7 @@ def test_an_encoding_sdt_does_not_read_is_one_line(sdt_main, name, says):
     assert _one_error_line(err) == f"error: {file}: {says}"
 
 
-def test_reading_one_channel_holds_that_channel_and_one_block(tmp_path):
+def test_reading_one_channel_holds_that_channel_and_one_block(tmp_path, readers):
     """8 channels of 2**19 24-bit frames (12 MB of samples): reading one channel allocates
     its float64 samples (4 MB) and one block, not the file's samples (scipy: 12 MB read,
     then a 16 MB int32 copy); listing the channels reads none."""
@@ -114,10 +114,10 @@ def test_reading_one_channel_holds_that_channel_and_one_block(tmp_path):
     soundfile.write(file, np.repeat(column[:, None] << 8, 8, axis=1), 51_200, subtype="PCM_24")
     tracemalloc.start()
     try:
-        scan_file(file, full_scale_g=1.0)
+        scan_file(file, readers, full_scale_g=1.0)
         listed = tracemalloc.get_traced_memory()[1]
         tracemalloc.reset_peak()
-        values = read_signal(file, "ch5", full_scale_g=1.0)
+        values = read_signal(file, readers, "ch5", full_scale_g=1.0)
         peak = tracemalloc.get_traced_memory()[1]
     finally:
         tracemalloc.stop()
@@ -126,10 +126,10 @@ def test_reading_one_channel_holds_that_channel_and_one_block(tmp_path):
     assert peak < 8 * frames + 1.2 * frames + 8 * 4 * 131_072 + 1_000_000  # ~10 MB, not 28+
 
 
-def test_a_file_shorter_than_its_riff_header_declares_is_refused(tmp_path):
+def test_a_file_shorter_than_its_riff_header_declares_is_refused(tmp_path, readers):
     """libsndfile would read what is left; the RIFF size says the file was cut."""
     whole = (CORPUS / "wavinfo-protools-umid.wav").read_bytes()
     cut = tmp_path / "cut.wav"
     cut.write_bytes(whole[:100_000])
     with pytest.raises(DataFileError, match="truncated: the file holds 100,000 bytes"):
-        scan_file(cut, full_scale_g=1.0)
+        scan_file(cut, readers, full_scale_g=1.0)

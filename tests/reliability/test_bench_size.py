@@ -28,7 +28,7 @@ def test_the_size_is_counted_from_the_plan(registry):
 def test_hours_of_work_need_yes(tmp_path, monkeypatch, sdt_main):
     # 5000 repeats hold ~150 GB of features: room is made so that only the time is at stake
     # (tests/reliability/test_bench_size_units.py: a size that cannot fit is refused)
-    monkeypatch.setattr("sdt_framework.data.sizes.available_memory", lambda: 10**15)
+    monkeypatch.setattr("sdt_framework.signals.sizes.available_memory", lambda: 10**15)
     out = tmp_path / "out"
     code, _, err = sdt_main("benchmark", "--quick", "--repeats", "5000", "--out", str(out))
     assert code == 2

@@ -67,7 +67,7 @@ def test_a_million_units_is_refused_before_the_folder_is_claimed(tmp_path):
 
 
 def test_many_units_that_fit_need_yes(sdt_main, monkeypatch, tmp_path, no_run):
-    monkeypatch.setattr("sdt_framework.data.sizes.available_memory", lambda: 10**15)
+    monkeypatch.setattr("sdt_framework.signals.sizes.available_memory", lambda: 10**15)
     out = tmp_path / "out"
     code, _, err = sdt_main("benchmark", "--quick", "--units", "1000", "--out", str(out))
     assert code == 2 and err.count("\n") == 1
@@ -77,7 +77,7 @@ def test_many_units_that_fit_need_yes(sdt_main, monkeypatch, tmp_path, no_run):
 
 
 def test_a_full_disk_refuses_it(sdt_main, monkeypatch, tmp_path, no_run):
-    monkeypatch.setattr("sdt_framework.data.sizes.free_disk", lambda path: 1000)
+    monkeypatch.setattr("sdt_framework.signals.sizes.free_disk", lambda path: 1000)
     out = tmp_path / "out"
     code, _, err = sdt_main("benchmark", "--quick", "--units", "3", "--out", str(out))
     assert code == 2 and err.count("\n") == 1

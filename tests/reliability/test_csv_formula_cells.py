@@ -47,7 +47,7 @@ def test_every_label_is_written_inert_and_read_back_unchanged(label):
         assert written == "'" + label  # OWASP: one single quote in front
 
 
-def test_manifest_cells_are_inert_and_read_back_to_the_folder_names(tmp_path, sdt_main):
+def test_manifest_cells_are_inert_and_read_back_to_the_folder_names(tmp_path, sdt_main, readers):
     tree = tmp_path / "tree"
     for k, label in enumerate(FORMULAS):
         for run in ("r1", "r2"):
@@ -61,7 +61,10 @@ def test_manifest_cells_are_inert_and_read_back_to_the_folder_names(tmp_path, sd
     cells = _cells(out)
     assert not [cell for row in cells for cell in row if _live(cell)]
     assert {row[2] for row in cells[1:]} == {"'" + label for label in FORMULAS}
-    read = {r.condition: float(r.load().mean()) for r in open_manifest(out).recordings()}
+    read = {
+        r.condition: float(r.load().mean())
+        for r in open_manifest(out, readers=readers).recordings()
+    }
     assert read == {label: float(k) for k, label in enumerate(FORMULAS)}
 
 

@@ -44,9 +44,9 @@ def test_time_acc_csv_is_one_acquisition_in_degrade(
     assert len(notes) == 1 and str(src) in notes[0] and "'time'" in notes[0]
 
 
-def test_same_rule_in_manifest_and_degrade(tmp_path: Path, acc: np.ndarray) -> None:
+def test_same_rule_in_manifest_and_degrade(tmp_path: Path, acc: np.ndarray, readers) -> None:
     """A headerless (samples, 2) file: a leading regular time axis is found by value."""
-    from sdt_framework.data.one_signal import open_signal
+    from sdt_framework.signals.one_signal import open_signal
 
     src = tmp_path / "s.csv"
     np.savetxt(src, np.c_[np.arange(acc.size) / FS, acc], delimiter=",", fmt="%.17g")
@@ -59,13 +59,13 @@ def test_same_rule_in_manifest_and_degrade(tmp_path: Path, acc: np.ndarray) -> N
         "path,sampling_rate_hz,condition,severity,recording_id,channel\n"
         "s.csv,20000,healthy,,r1,ch1\n"
     )
-    (rec,) = open_manifest(manifest).recordings()
+    (rec,) = open_manifest(manifest, readers=readers).recordings()
     np.testing.assert_array_equal(rec.load(), [acc])
 
 
 def test_rows_as_acquisitions_still_read_as_rows(tmp_path: Path, acc: np.ndarray) -> None:
     """``numpy.savetxt`` of (2, n): the longer axis is time, so two acquisitions."""
-    from sdt_framework.data.csv_signal import read_csv_signal
+    from sdt_framework.signals.csv_rule import read_csv_signal
 
     x = np.vstack([acc, -acc])
     np.savetxt(tmp_path / "x.csv", x, delimiter=",", fmt="%.17g")
@@ -75,7 +75,7 @@ def test_rows_as_acquisitions_still_read_as_rows(tmp_path: Path, acc: np.ndarray
 
 
 def test_a_ramp_alone_is_a_signal_not_a_time_axis(tmp_path: Path) -> None:
-    from sdt_framework.data.csv_signal import read_csv_signal
+    from sdt_framework.signals.csv_rule import read_csv_signal
 
     np.savetxt(tmp_path / "ramp.csv", np.arange(100.0), fmt="%g")
     parsed = read_csv_signal(tmp_path / "ramp.csv")
@@ -109,7 +109,7 @@ def test_header_only_file_is_refused(sdt_main, monkeypatch, capsys, tmp_path: Pa
     ids=["latin-1-body", "latin-1-header", "ragged", "empty-cell", "semicolons", "nan", "empty"],
 )
 def test_bad_signal_file_is_one_line_naming_file_and_line(
-    sdt_main, monkeypatch, capsys, tmp_path: Path, content: bytes, expected: str
+    sdt_main, monkeypatch, capsys, tmp_path: Path, content: bytes, expected: str, readers
 ) -> None:
     src = tmp_path / "sig.csv"
     src.write_bytes(content)
@@ -118,7 +118,7 @@ def test_bad_signal_file_is_one_line_naming_file_and_line(
         "path,sampling_rate_hz,condition,severity,recording_id,channel\n"
         "sig.csv,20000,healthy,,r1,ch1\n"
     )
-    dataset = open_manifest(manifest, validate=True)
+    dataset = open_manifest(manifest, readers=readers, validate=True)
     (skip,) = dataset.skipped
     assert skip.reason.startswith(f"{src}: ") and expected in skip.reason
     code, _, err = sdt_main(

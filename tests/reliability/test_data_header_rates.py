@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 import scipy.io.wavfile
 
-from sdt_framework.data.signal_files import read_signal
+from sdt_framework.signals.files import read_signal
 
 from ..helpers import six_recordings
 
@@ -126,7 +126,9 @@ def test_a_microhertz_tdms_row_is_skipped_and_the_benchmark_runs(sdt_main, tmp_p
     ) in err
 
 
-def test_a_slow_channel_beside_an_accelerometer_is_listed_with_a_warning(sdt_main, tmp_path):
+def test_a_slow_channel_beside_an_accelerometer_is_listed_with_a_warning(
+    sdt_main, tmp_path, readers
+):
     """A 1 Hz temperature channel does not hide the accelerometer of the same file; reading
     it is refused with the same line."""
     file = _tdms(tmp_path / "daq.tdms", {"acc/x": 1 / 25_600, "env/temp": 1.0})
@@ -135,13 +137,13 @@ def test_a_slow_channel_beside_an_accelerometer_is_listed_with_a_warning(sdt_mai
     assert "acc/x" in out and "env/temp" in out
     fault = f"{file}: its channel 'env/temp' wf_increment is 1 s, a rate of 1 Hz, {RANGE}"
     assert f"warning: listed, not read: {fault}" in err
-    assert read_signal(file, "acc/x").shape == (1, 4096)
+    assert read_signal(file, readers, "acc/x").shape == (1, 4096)
     with pytest.raises(Exception, match=fault.replace("(", r"\(").replace(")", r"\)")):
-        read_signal(file, "env/temp")
+        read_signal(file, readers, "env/temp")
 
 
 def test_the_readers_and_the_twin_hold_rates_to_one_range():
-    from sdt_framework.data import readers
+    from sdt_framework.signals import rules as readers
     from sdt_framework.twin import pair
 
     assert readers.RATE_RANGE_HZ == (25.0, 1e7)

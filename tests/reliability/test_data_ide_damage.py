@@ -16,8 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from sdt_framework.data.ide import read_ide
+from sdt_plugins.readers.ide.parse import read_ide
 
 DATA = Path(__file__).parents[1] / "data" / "endaq"
 SIZE = 658_680  # bytes of SSX66115.IDE
@@ -139,7 +138,8 @@ def test_non_ascii_channel_names_give_one_note_not_a_raw_warning(sdt, tmp_path):
 def test_a_channel_holding_nan_is_refused_naming_its_first_sample():
     """What idelib returns for damaged sample bytes it did not stop at (channel 59 of the
     randomly damaged file holds one NaN): the first bad sample and its time are named."""
-    from sdt_framework.data.ide import _require_finite
+    from sdt_plugins.readers.ide.parse import _require_finite
+
     from sdt_framework.errors import SDTError
 
     times = np.arange(100) / 3134.0

@@ -15,8 +15,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sdt_framework.data.timebase import on_even_grid, require_one_record
 from sdt_framework.errors import SDTError
+from sdt_framework.signals.timebase import on_even_grid, require_one_record
 
 DATA = Path(__file__).parents[1] / "data" / "endaq"
 TICKS_PER_S = 32768  # SSX66115's time codes: 30.517578125 us each
@@ -71,7 +71,7 @@ def test_a_timestamp_that_goes_back_or_a_rate_that_changes_is_refused():
 def test_real_recorders_time_bases_are_one_record():
     """Every channel of the shipped recordings passes (their intervals are within 17 % of the
     median and their two rates within 2.4 %), and their accelerometers read as before."""
-    from sdt_framework.data.ide import inspect_ide, read_ide
+    from sdt_plugins.readers.ide.parse import inspect_ide, read_ide
 
     for path in sorted(DATA.glob("*.IDE")):
         assert [c.time_fault for c in inspect_ide(path)] == [None] * len(inspect_ide(path))

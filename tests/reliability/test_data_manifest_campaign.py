@@ -87,7 +87,9 @@ def _manifest(sdt_main, tree: Path, pattern: str, out: Path, *extra: str):
 PADDED = "       Acceleration"  # as the issue's LabVIEW file names its channel
 
 
-def test_a_padded_channel_name_is_written_and_read_as_the_file_names_it(tmp_path, sdt_main):
+def test_a_padded_channel_name_is_written_and_read_as_the_file_names_it(
+    tmp_path, sdt_main, readers
+):
     import lvm_read
 
     for k, folder in enumerate(["healthy", "fault1", "fault2"]):
@@ -97,7 +99,7 @@ def test_a_padded_channel_name_is_written_and_read_as_the_file_names_it(tmp_path
     assert code == 0, err
     assert {r["variable"] for r in _rows(out)} == {PADDED}  # as the file names it
     assert {r["channel"] for r in _rows(out)} == {"Acceleration"}  # a label, stripped
-    recordings = {r.condition: r for r in open_manifest(out).recordings()}
+    recordings = {r.condition: r for r in open_manifest(out, readers=readers).recordings()}
     assert len(recordings) == 3  # main: 0, each row skipped "no signal 'Acceleration'"
     for folder, rec in recordings.items():
         reference = lvm_read.read(str(tmp_path / "tree" / folder / "r1.lvm"),
@@ -106,7 +108,7 @@ def test_a_padded_channel_name_is_written_and_read_as_the_file_names_it(tmp_path
         np.testing.assert_array_equal(rec.load(), [reference[0]["data"][:, column]])
 
 
-def test_a_name_typed_without_its_padding_reads_the_one_signal_it_can_be(tmp_path):
+def test_a_name_typed_without_its_padding_reads_the_one_signal_it_can_be(tmp_path, readers):
     """Exact names first: ``'  a'`` and ``'a'`` are two signals; a typed ``'Acceleration'``
     reads the padded channel only where no channel has that exact name."""
     padded, plain = np.arange(300.0), np.full(300, -2.0)
@@ -121,13 +123,13 @@ def test_a_name_typed_without_its_padding_reads_the_one_signal_it_can_be(tmp_pat
         + "one.lvm,,fault,1,r2,typed,Acceleration \n",  # typed, a trailing space too
         encoding="utf-8",
     )
-    loaded = {r.channel: r.load() for r in open_manifest(manifest).recordings()}
+    loaded = {r.channel: r.load() for r in open_manifest(manifest, readers=readers).recordings()}
     np.testing.assert_array_equal(loaded["padded"], [padded])
     np.testing.assert_array_equal(loaded["plain"], [plain])
     np.testing.assert_array_equal(loaded["typed"], [padded + 1])
 
 
-def test_one_signal_named_two_ways_on_two_rows_is_refused(tmp_path):
+def test_one_signal_named_two_ways_on_two_rows_is_refused(tmp_path, readers):
     from sdt_framework.errors import SDTError
 
     _lvm(tmp_path / "one.lvm", {PADDED: np.arange(300.0)})
@@ -136,10 +138,10 @@ def test_one_signal_named_two_ways_on_two_rows_is_refused(tmp_path):
     manifest.write_text(header + f'one.lvm,,healthy,,r1,a,"{PADDED}"\n'
                         + "one.lvm,,fault,1,r2,a,Acceleration\n", encoding="utf-8")  # fmt: skip
     with pytest.raises(SDTError, match=r"line 2 and line 3 both read .*one\.lvm \(variable"):
-        open_manifest(manifest)
+        open_manifest(manifest, readers=readers)
 
 
-def test_channels_that_are_no_acceleration_are_left_out_and_counted(tmp_path, sdt_main):
+def test_channels_that_are_no_acceleration_are_left_out_and_counted(tmp_path, sdt_main, readers):
     from nptdms import TdmsFile
 
     tree = tmp_path / "tree"
@@ -164,7 +166,9 @@ def test_channels_that_are_no_acceleration_are_left_out_and_counted(tmp_path, sd
     )
     rows = _rows(out)
     assert {(r["variable"], r["units"]) for r in rows} == {("Acc/x", "g"), ("Acc/y", "g")}
-    recordings = open_manifest(out).recordings()  # main: refused, "'degC', not an acceleration"
+    recordings = open_manifest(
+        out, readers=readers
+    ).recordings()  # main: refused, "'degC', not an acceleration"
     assert len(recordings) == 4
     for rec in recordings:
         group, channel = rec.channel.split("-")
@@ -197,14 +201,16 @@ def _campaign(root: Path, layout: str) -> dict[str, float]:
         ("folder", "{condition}/{severity?}/{run}/{channel}.npy"),  # healthy/r0, bearing/2/r3
     ],
 )
-def test_one_pattern_reads_healthy_folders_without_a_severity(tmp_path, sdt_main, layout, pattern):
+def test_one_pattern_reads_healthy_folders_without_a_severity(
+    tmp_path, sdt_main, layout, pattern, readers
+):
     values = _campaign(tmp_path / "tree", layout)
     out = tmp_path / "m.csv"
     code, printed, err = _manifest(sdt_main, tmp_path / "tree", pattern, out, "--rate-hz", "1000")
     assert code == 0, err  # main: "unknown field(s) {severity?}"
     assert "5 rows from 5 files (5 recordings); 0 not used" in printed
     labels = {r.run: (r.condition, r.severity, float(r.load().mean()))
-              for r in open_manifest(out).recordings()}  # fmt: skip
+              for r in open_manifest(out, readers=readers).recordings()}  # fmt: skip
     assert labels == {
         "r0": ("healthy", None, values["r0"]),
         "r1": ("healthy", None, values["r1"]),

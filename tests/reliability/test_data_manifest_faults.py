@@ -36,14 +36,14 @@ def write(folder: Path, text: str, name: str = "manifest.csv") -> Path:
     return path
 
 
-def test_two_machines_reusing_a_run_and_channel_are_two_recordings(folder: Path) -> None:
+def test_two_machines_reusing_a_run_and_channel_are_two_recordings(folder: Path, readers) -> None:
     manifest = write(
         folder,
         HEADER
         + "ramp.npy,1000,healthy,,run-1,ch1,Motor-A\n"
         + "seven.npy,1000,healthy,,run-1,ch1,Motor-B\n",
     )
-    ds = open_manifest(manifest)
+    ds = open_manifest(manifest, readers=readers)
     recs = {r.recording_id: r for r in ds.recordings()}
     assert len(recs) == 2  # ids are unique: nothing keyed by id can merge them
     assert set(recs) == {"Motor-A/run-1/ch1", "Motor-B/run-1/ch1"}
@@ -52,16 +52,16 @@ def test_two_machines_reusing_a_run_and_channel_are_two_recordings(folder: Path)
     assert set(ds.runs()) == {"Motor-A/run-1", "Motor-B/run-1"}
 
 
-def test_exact_duplicate_row_is_refused_naming_both_lines(folder: Path) -> None:
+def test_exact_duplicate_row_is_refused_naming_both_lines(folder: Path, readers) -> None:
     row = "ramp.npy,1000,healthy,,run-1,ch1,rig\n"
     manifest = write(folder, HEADER + row + "seven.npy,1000,healthy,,run-2,ch1,rig\n" + row)
     with pytest.raises(SDTError) as info:
-        open_manifest(manifest)
+        open_manifest(manifest, readers=readers)
     message = str(info.value)
     assert "line 2 and line 4 are identical" in message and str(manifest) in message
 
 
-def test_one_signal_file_on_two_rows_is_refused(folder: Path) -> None:
+def test_one_signal_file_on_two_rows_is_refused(folder: Path, readers) -> None:
     manifest = write(
         folder,
         HEADER
@@ -69,11 +69,13 @@ def test_one_signal_file_on_two_rows_is_refused(folder: Path) -> None:
         + "./ramp.npy,1000,bearing,2,run-2,ch1,rig\n",
     )
     with pytest.raises(SDTError, match=r"line 2 and line 3 both read .*ramp\.npy"):
-        open_manifest(manifest)
+        open_manifest(manifest, readers=readers)
 
 
 @pytest.mark.parametrize("value", ["1.7", "2.5", "inf", "-0.1"])
-def test_non_integer_severity_is_refused_naming_line_and_value(folder: Path, value: str) -> None:
+def test_non_integer_severity_is_refused_naming_line_and_value(
+    folder: Path, value: str, readers
+) -> None:
     manifest = write(
         folder,
         HEADER
@@ -81,11 +83,11 @@ def test_non_integer_severity_is_refused_naming_line_and_value(folder: Path, val
         + f"seven.npy,1000,bearing,{value},run-2,ch1,rig\n",
     )
     with pytest.raises(SDTError) as info:
-        open_manifest(manifest)
+        open_manifest(manifest, readers=readers)
     assert f"line 3: field 'severity' = '{value}' is not an integer" in str(info.value)
 
 
-def test_integer_valued_float_severity_is_accepted(folder: Path) -> None:
+def test_integer_valued_float_severity_is_accepted(folder: Path, readers) -> None:
     """Parquet stores a column with empty cells as float: 2.0 is the level 2."""
     path = folder / "m.parquet"
     pd.DataFrame(
@@ -98,7 +100,7 @@ def test_integer_valued_float_severity_is_accepted(folder: Path) -> None:
             "channel": ["x", "x"],
         }
     ).to_parquet(path)
-    severities = {r.run: r.severity for r in open_manifest(path).recordings()}
+    severities = {r.run: r.severity for r in open_manifest(path, readers=readers).recordings()}
     assert severities == {"r1": None, "r2": 2}
 
 
@@ -135,22 +137,22 @@ def test_broken_manifest_is_one_line_naming_file_and_line(
     assert err.count("\n") == 1 and expected in err and str(manifest) in err
 
 
-def test_headerless_csv_signal_keeps_its_first_row(folder: Path) -> None:
+def test_headerless_csv_signal_keeps_its_first_row(folder: Path, readers) -> None:
     """pyarrow took line 1 of a header-less CSV as column names: one sample per column lost."""
     values = np.random.default_rng(3).normal(size=(50, 2))
     np.savetxt(folder / "two.csv", values, delimiter=",", fmt="%.17g")
     manifest = write(folder, HEADER + "two.csv,1000,healthy,,run-1,ch1,rig\n")
-    (rec,) = open_manifest(manifest).recordings()
+    (rec,) = open_manifest(manifest, readers=readers).recordings()
     np.testing.assert_array_equal(rec.load(), values.T)
 
 
 def test_time_column_of_a_manifest_csv_is_noted(
-    sdt_main, folder: Path, monkeypatch, capsys
+    sdt_main, folder: Path, monkeypatch, capsys, readers
 ) -> None:
     t = np.arange(200) / 1000
     np.savetxt(folder / "a.csv", np.c_[t, np.sin(t)], delimiter=",", fmt="%.9g")  # no header
     manifest = write(folder, HEADER + "a.csv,1000,healthy,,run-1,ch1,rig\n")
-    ds = open_manifest(manifest)
+    ds = open_manifest(manifest, readers=readers)
     (rec,) = ds.recordings()
     np.testing.assert_allclose(rec.load(), [np.sin(t)], rtol=1e-8)
     (note,) = ds.notes

@@ -54,7 +54,7 @@ def _one_error_line(err: str) -> str:
     return lines[0]
 
 
-def test_channels_meeting_after_slash_becomes_dash_stay_two_recordings(tmp_path, sdt_main):
+def test_channels_meeting_after_slash_becomes_dash_stay_two_recordings(tmp_path, sdt_main, readers):
     first, second = np.arange(300.0), np.full(300, -7.0)
     _tdms(tmp_path / "tree/healthy/r1/f.tdms", {("g", "a-b"): first, ("g-a", "b"): second})
     _tdms(tmp_path / "tree/healthy/r2/f.tdms", {("g", "a-b"): first + 1})  # one of the two
@@ -69,14 +69,14 @@ def test_channels_meeting_after_slash_becomes_dash_stay_two_recordings(tmp_path,
         ("r1", "g/a-b"): "g-a-b~2",
         ("r2", "g/a-b"): "g-a-b~2",
     }
-    recordings = {(r.run, r.channel): r for r in open_manifest(out).recordings()}
+    recordings = {(r.run, r.channel): r for r in open_manifest(out, readers=readers).recordings()}
     assert len(recordings) == 3
     np.testing.assert_array_equal(recordings["r1", "g-a-b~2"].load(), [first])
     np.testing.assert_array_equal(recordings["r1", "g-a-b~1"].load(), [second])
     np.testing.assert_array_equal(recordings["r2", "g-a-b~2"].load(), [first + 1])
 
 
-def test_symlinked_run_broken_link_and_fifo_are_used_or_named(tmp_path, sdt_main):
+def test_symlinked_run_broken_link_and_fifo_are_used_or_named(tmp_path, sdt_main, readers):
     tree = tmp_path / "tree"
     _npy(tree / "healthy/h1/ch1.npy", 1.0)
     _npy(tree / "fault/f1/ch1.npy", 2.0)
@@ -92,7 +92,7 @@ def test_symlinked_run_broken_link_and_fifo_are_used_or_named(tmp_path, sdt_main
     assert "not used: healthy/h1/ch2.npy: broken symbolic link to gone.npy" in err
     assert "not used: fault/f1/ch2.npy: not a regular file (a named pipe)" in err
     assert "not used: fault/f1/ch3.npy: not a regular file (a character device)" in err
-    runs = {r.run: float(r.load().mean()) for r in open_manifest(out).recordings()}
+    runs = {r.run: float(r.load().mean()) for r in open_manifest(out, readers=readers).recordings()}
     assert runs == {"h1": 1.0, "f1": 2.0, "f2": 3.0}
 
 
@@ -116,7 +116,7 @@ def test_a_link_loop_and_a_folder_reached_twice_are_named_and_used_once(tmp_path
     ]
 
 
-def test_run_names_reused_under_each_condition_are_separate_recordings(tmp_path, sdt_main):
+def test_run_names_reused_under_each_condition_are_separate_recordings(tmp_path, sdt_main, readers):
     tree = tmp_path / "tree"
     levels = {"healthy -": 0.0, "bearing 1": 1.0, "bearing 2": 2.0, "misalign 1": 3.0}
     for folder, value in levels.items():
@@ -129,7 +129,7 @@ def test_run_names_reused_under_each_condition_are_separate_recordings(tmp_path,
     assert code == 0, err
     assert "12 rows from 12 files (12 recordings)" in printed
     assert "each recording_id is built from the labels" in err
-    recordings = open_manifest(out).recordings()
+    recordings = open_manifest(out, readers=readers).recordings()
     ids = {r.recording_id: (r.condition, r.severity, float(r.load().mean())) for r in recordings}
     assert len(ids) == 12
     assert ids["machine/bearing 2/run3/ch1"] == ("bearing", 2, pytest.approx(2.3))
@@ -189,7 +189,7 @@ def test_a_severity_in_arabic_indic_digits_is_no_level(tmp_path, sdt_main):
     assert [(r["severity"], r["recording_id"]) for r in _rows(out)] == [("2", "r1")]
 
 
-def test_a_manifest_severity_or_rate_in_other_digits_is_refused(tmp_path):
+def test_a_manifest_severity_or_rate_in_other_digits_is_refused(tmp_path, readers):
     from sdt_framework.errors import SDTError
 
     _npy(tmp_path / "a.npy", 1.0)
@@ -200,4 +200,4 @@ def test_a_manifest_severity_or_rate_in_other_digits_is_refused(tmp_path):
     ):
         (tmp_path / "m.csv").write_text(header + row, encoding="utf-8")
         with pytest.raises(SDTError, match=f"line 2: field {field}"):
-            open_manifest(tmp_path / "m.csv")
+            open_manifest(tmp_path / "m.csv", readers=readers)

@@ -46,11 +46,11 @@ def test_a_signal_of_another_kind_stops_the_benchmark(sdt_main, tmp_path, values
     assert not out.exists()  # refused before the folder is claimed
 
 
-def test_integer_counts_are_signals(tmp_path):
-    from sdt_framework.data.signal_files import read_signal
+def test_integer_counts_are_signals(tmp_path, readers):
+    from sdt_framework.signals.files import read_signal
 
     np.save(tmp_path / "counts.npy", np.arange(-3, 3, dtype=np.int16))
-    assert read_signal(tmp_path / "counts.npy", None).tolist() == [[-3, -2, -1, 0, 1, 2]]
+    assert read_signal(tmp_path / "counts.npy", readers, None).tolist() == [[-3, -2, -1, 0, 1, 2]]
 
 
 def test_a_skipped_file_is_named_on_the_terminal(sdt_main, tmp_path):

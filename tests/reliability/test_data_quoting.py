@@ -45,14 +45,16 @@ def leaks(text: str) -> list[str]:
 
 
 def test_quote_cuts_long_tokens() -> None:
-    from sdt_framework.data.tokens import quote
+    from sdt_framework.signals.tokens import quote
 
     assert quote("1.25") == "'1.25'"
     assert quote(SECRET[1]) == repr(SECRET[1][:TOKEN_LIMIT] + "…")
 
 
 @pytest.mark.parametrize("suffix", [".csv", ".npy", ".mat"])
-def test_manifest_row_pointing_at_a_system_file(tmp_path: Path, secret: Path, suffix: str) -> None:
+def test_manifest_row_pointing_at_a_system_file(
+    tmp_path: Path, secret: Path, suffix: str, readers
+) -> None:
     link = tmp_path / f"signal{suffix}"
     link.symlink_to(secret)
     manifest = tmp_path / "m.csv"
@@ -60,17 +62,17 @@ def test_manifest_row_pointing_at_a_system_file(tmp_path: Path, secret: Path, su
         "path,sampling_rate_hz,condition,severity,recording_id,channel\n"
         f"{link.name},1000,healthy,,r1,ch1\n"
     )
-    ds = open_manifest(manifest, validate=True)
+    ds = open_manifest(manifest, readers=readers, validate=True)
     assert ds.recordings() == [] and len(ds.skipped) == 1
     reason = json.dumps(ds.describe())
     assert leaks(reason) == [], reason
 
 
-def test_manifest_symlinked_to_a_system_file(tmp_path: Path, secret: Path) -> None:
+def test_manifest_symlinked_to_a_system_file(tmp_path: Path, secret: Path, readers) -> None:
     link = tmp_path / "manifest.csv"
     link.symlink_to(secret)
     with pytest.raises(Exception) as info:
-        open_manifest(link)
+        open_manifest(link, readers=readers)
     assert leaks(str(info.value)) == [], str(info.value)
 
 

@@ -22,7 +22,7 @@ from ..helpers import six_recordings
 from .labview import lvm, segment
 
 
-def test_a_band_the_file_rate_leaves_empty_names_the_file_and_its_rate(tmp_path, registry):
+def test_a_band_the_file_rate_leaves_empty_names_the_file_and_its_rate(tmp_path, registry, readers):
     """A 400 Hz WAV (rate from its header) and a feature set of 1-2 kHz: no FFT bin."""
     wav = tmp_path / "rec.wav"
     scipy.io.wavfile.write(wav, 400, np.random.default_rng(0).normal(size=1600).astype("f4"))
@@ -30,7 +30,7 @@ def test_a_band_the_file_rate_leaves_empty_names_the_file_and_its_rate(tmp_path,
         "path,sampling_rate_hz,condition,severity,recording_id,channel\nrec.wav,,healthy,,r1,ch1\n",
         encoding="utf-8",
     )
-    [recording] = open_manifest(tmp_path / "m.csv").recordings()
+    [recording] = open_manifest(tmp_path / "m.csv", readers=readers).recordings()
     assert recording.sampling_rate_hz == 400.0  # the header's rate
     high = FeatureSetSpec(
         name="high",

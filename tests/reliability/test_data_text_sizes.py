@@ -93,12 +93,12 @@ def test_a_parse_that_cannot_fit_in_memory_is_refused(
         file.write_bytes((DATA / name).read_bytes())
     size = file.stat().st_size
     assert size * per_byte > 100_000
-    monkeypatch.setattr("sdt_framework.data.signal_sizes.available_memory", lambda: 100_000)
+    monkeypatch.setattr("sdt_framework.signals.file_sizes.available_memory", lambda: 100_000)
     _never_parsed(monkeypatch)
     code, _, err = sdt_main("dataset", "inspect", str(file))
     assert code == 2
     fmt = "LVM" if name.endswith(".lvm") else "UFF"
-    from sdt_framework.data.sizes import human_bytes
+    from sdt_framework.signals.sizes import human_bytes
 
     assert _one_error_line(err) == (
         f"error: {file}: parsing this {human_bytes(size)} {fmt} file needs about "

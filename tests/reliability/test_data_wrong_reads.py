@@ -19,7 +19,7 @@ import pytest
 import scipy.io
 
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.data.signal_files import read_signal
+from sdt_framework.signals.files import read_signal
 
 from ..helpers import six_recordings
 from .labview import lvm, segment
@@ -56,7 +56,7 @@ G = {"wf_increment": 1 / 25_600, "unit_string": "g"}
     ],
 )  # fmt: skip
 def test_a_tdms_channel_whose_rate_or_units_change_between_segments(
-    sdt_main, tmp_path, second, words
+    sdt_main, tmp_path, second, words, readers
 ):
     file = _tdms(tmp_path / "rec.tdms", [G, second])
     code, _, err = sdt_main("dataset", "inspect", str(file))
@@ -67,14 +67,14 @@ def test_a_tdms_channel_whose_rate_or_units_change_between_segments(
         f"one rate, unit and scale per channel"
     )
     with pytest.raises(DataFileError, match=re.escape(words)):
-        read_signal(file, "acc/ch1")
+        read_signal(file, readers, "acc/ch1")
 
 
-def test_a_tdms_channel_given_the_same_properties_in_every_segment_reads_whole(tmp_path):
+def test_a_tdms_channel_given_the_same_properties_in_every_segment_reads_whole(tmp_path, readers):
     """LabVIEW writes a channel's properties again with each segment: no change, no refusal;
     the segments' values follow each other in order."""
     file = _tdms(tmp_path / "rec.tdms", [G, G, dict(G)])
-    data = read_signal(file, "acc/ch1")
+    data = read_signal(file, readers, "acc/ch1")
     np.testing.assert_array_equal(data[0], np.repeat([1.0, 2.0, 3.0], 4096))
 
 
@@ -96,11 +96,13 @@ def test_lvm_segments_at_different_delta_x_are_refused_naming_the_segment(sdt_ma
     )
 
 
-def test_lvm_segments_at_one_delta_x_are_its_acquisitions(tmp_path):
+def test_lvm_segments_at_one_delta_x_are_its_acquisitions(tmp_path, readers):
     file = tmp_path / "rec.lvm"
     rows = [_rows(2048, seed) for seed in range(3)]
     file.write_text(lvm([segment(["acc"], r, 1 / 25_600) for r in rows]), encoding="utf-8")
-    np.testing.assert_array_equal(read_signal(file, "acc"), np.stack([r[:, 0] for r in rows]))
+    np.testing.assert_array_equal(
+        read_signal(file, readers, "acc"), np.stack([r[:, 0] for r in rows])
+    )
 
 
 def test_an_lvm_cut_inside_its_last_value_is_refused(sdt_main, tmp_path):

@@ -5,7 +5,7 @@ twin check`` read a signal file whole with no estimate: a sparse 9.6 GB
 ``.npy`` grew past 8 GB of memory (or, under ``ulimit -v``, ended in "out of
 memory" after the read had started). Now the samples are read from the
 file's header, multiplied by the command's measured bytes per sample
-(:mod:`sdt_framework.data.signal_sizes`), and a file that cannot fit in the
+(:mod:`sdt_framework.signals.file_sizes`), and a file that cannot fit in the
 memory available is refused in one line naming the file, its samples, the
 memory needed and the memory available.
 
@@ -24,7 +24,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sdt_framework.data.signal_sizes import (
+from sdt_framework.signals.file_sizes import (
     DEGRADE_BYTES_PER_SAMPLE,
     FEATURES_BYTES_PER_SAMPLE,
     TWIN_BYTES_PER_SAMPLE,
@@ -63,12 +63,12 @@ def refusal(result: subprocess.CompletedProcess[str], name: str, per_sample: int
     assert "split it into shorter files" in err or "shorter stretch" in err, err
 
 
-def test_header_gives_the_samples_of_npy_and_csv(tmp_path: Path, huge: Path) -> None:
-    assert file_samples(huge) == SAMPLES
+def test_header_gives_the_samples_of_npy_and_csv(tmp_path: Path, huge: Path, readers) -> None:
+    assert file_samples(huge, readers) == SAMPLES
     table = np.random.default_rng(0).normal(size=(5000, 3))
     np.savetxt(tmp_path / "a.csv", table, delimiter=",", header="t,x,y", comments="")
-    assert file_samples(tmp_path / "a.csv") == pytest.approx(15000, rel=0.02)
-    assert file_samples(tmp_path / "missing.npy") is None
+    assert file_samples(tmp_path / "a.csv", readers) == pytest.approx(15000, rel=0.02)
+    assert file_samples(tmp_path / "missing.npy", readers) is None
 
 
 def test_degrade_refuses_a_file_that_cannot_fit(tmp_path: Path, huge: Path) -> None:

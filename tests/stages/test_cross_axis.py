@@ -26,13 +26,19 @@ def crossed(pct: float, name: str = "crossed"):
     return ADXL345.model_validate({**ADXL345.model_dump(), "name": name, "stages": stages})
 
 
+def bound(sensor):
+    """``sensor`` with its stages bound, as a caller holding a registry hands it to the chain
+    (``compile_chain``, ``SharedPrefix`` and ``noise_check`` take bound profiles only)."""
+    return build_registry().bind(sensor)
+
+
 def tones(freqs, seconds=1.0, amp=0.5):
     t = np.arange(int(FS * seconds)) / FS
     return [amp * np.sin(2 * np.pi * f * t)[None, :].repeat(2, axis=0) for f in freqs]
 
 
 def test_runs_first_on_the_raw_inputs():
-    chain = compile_chain(crossed(1.0), FS)
+    chain = compile_chain(bound(crossed(1.0)), FS)
     assert chain.stages[0].name == "cross-axis.0"
 
 
@@ -73,7 +79,7 @@ def test_without_the_other_axes_it_is_one_clear_error():
 def test_shared_prefix_with_a_node_matches_degrade():
     ax, ay, az = tones((120.0, 310.0, 455.0))
     shared = SharedPrefix(ax, FS, other_axes={"y": ay, "z": az})
-    for sensor in (PLAIN, crossed(3.0)):
+    for sensor in (PLAIN, bound(crossed(3.0))):
         want, _ = degrade(ax, FS, sensor, seed=5, other_axes={"y": ay, "z": az})
         got, _ = shared.degrade(sensor, seed=5)
         np.testing.assert_array_equal(got, want)
@@ -175,5 +181,5 @@ def test_a_tolerance_alone_adds_the_stage_and_needs_nodes(tmp_path):
 def test_zero_motion_check_reads_zeros_on_the_other_axes():
     """validate-noise: on a node at rest the coupling adds nothing, bit for bit."""
     plain = noise_check(PLAIN, seed=4).to_dict()
-    with_stage = noise_check(crossed(5.0), seed=4).to_dict()
+    with_stage = noise_check(bound(crossed(5.0)), seed=4).to_dict()
     assert with_stage["sdt"] == plain["sdt"]

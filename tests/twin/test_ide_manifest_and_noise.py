@@ -7,8 +7,7 @@ import shutil
 from pathlib import Path
 
 import numpy as np
-
-from sdt_framework.data.ide import read_ide
+from sdt_plugins.readers.ide.parse import read_ide
 
 DATA = Path(__file__).parents[1] / "data" / "endaq"
 

@@ -66,8 +66,13 @@ def test_a_pair_of_daq_files_takes_rate_and_units_from_them(pairs, registry):
         assert b["judgeable"] == a["judgeable"]
 
 
-def test_a_pair_file_without_readers_says_what_to_pass(pairs):
+def test_a_pair_is_read_only_by_the_readers_handed_down(pairs, registry):
+    # the twin never looks a registry up: the readers are a required argument, and a pair
+    # whose files no reader handed down reads is refused naming the formats it was given
     from sdt_framework.errors import SDTError
 
-    with pytest.raises(SDTError, match=r"pass readers=registry.signal_readers\(\)"):
-        load_pair(pairs[1], "adxl345")
+    with pytest.raises(TypeError, match="readers"):
+        load_pair(pairs[1], "adxl345")  # type: ignore[call-arg]
+    tdms_only = [r for r in registry.signal_readers() if r.name == "tdms"]
+    with pytest.raises(SDTError, match=r"dev\.uff: format not recognised.*sdt reads TDMS"):
+        load_pair(pairs[1], "adxl345", readers=tdms_only)

@@ -21,8 +21,8 @@ G = 9.80665  # m/s^2 per g (standard gravity)
 
 
 @pytest.fixture(scope="module")
-def written(tmp_path_factory):
-    ide = load_pair(DATA / "SSX66115.IDE", "adxl345")
+def written(tmp_path_factory, readers):
+    ide = load_pair(DATA / "SSX66115.IDE", "adxl345", readers=readers)
     folder = tmp_path_factory.mktemp("pair")
     ref = ide.reference
     t = ref.start_s + np.arange(ref.values.shape[1]) / ref.rate_hz
@@ -105,7 +105,7 @@ def test_a_pair_without_motion_says_why_nothing_is_judged(tmp_path, sdt_main):
 
 def test_the_reference_csv_is_read_once_for_its_columns_and_time(written, monkeypatch, registry):
     # three signal columns and a time column: one parse of the file, not four
-    from sdt_framework.data import csv_signal
+    from sdt_framework.signals import csv_rule as csv_signal
 
     parsed: list[Path] = []
     real = csv_signal._parse

@@ -46,10 +46,10 @@ def _pair(true, reference_gain: float = 1.0, reference_nsd_ug: float = 0.01) -> 
 @pytest.fixture(scope="module")
 def true(registry):
     base = registry.sensor("adxl345")
-    return base.model_validate(
+    return registry.bind(base.model_validate(  # the chain takes bound stages only
         {**base.content_dict(), "name": "adxl345-true", "noise_density_ug_rthz": NSD,
          "stages": [{"name": "scale", "params": {"error_pct": 2.0}}]}
-    )  # fmt: skip
+    ))  # fmt: skip
 
 
 def test_a_sound_reference_agrees_in_gain(true):

@@ -11,8 +11,8 @@ from pathlib import Path
 import idelib
 import numpy as np
 import pytest
+from sdt_plugins.readers.ide.parse import inspect_ide, read_ide
 
-from sdt_framework.data.ide import inspect_ide, read_ide
 from sdt_framework.twin import check_twin, load_pair
 
 DATA = Path(__file__).parents[1] / "data" / "endaq"
@@ -58,8 +58,8 @@ def test_values_are_in_g_and_uneven_timestamps_are_resampled_with_a_note():
     assert moved.note and "resampled" in moved.note
 
 
-def test_check_reports_the_real_devices_band_rms(registry):
-    pair = load_pair(DATA / "SSX66115.IDE", "adxl345")
+def test_check_reports_the_real_devices_band_rms(registry, readers):
+    pair = load_pair(DATA / "SSX66115.IDE", "adxl345", readers=readers)
     result = check_twin(pair, registry.sensor("adxl345"))
     assert result.summary["judgeable_bands"] >= 8
     # independent: the device's raw samples over the compared span, and Welch's estimate
@@ -90,7 +90,8 @@ def test_check_reports_the_real_devices_band_rms(registry):
 @pytest.mark.parametrize(
     ("args", "words"),
     [
-        (["twin", "check", "{data}/LICENSE", "--sensor", "adxl345"], "not an enDAQ IDE file"),
+        (["twin", "check", "{data}/LICENSE", "--sensor", "adxl345"],
+         "not a recorder file of channels (enDAQ IDE: .ide) nor a pair file"),
         (["twin", "check", "{data}/SSX66115.IDE", "--sensor", "adxl345", "--axes", "w"],
          "axis 'w' is not on both channels"),
         (["twin", "check", "{data}/SSX66115.IDE", "--sensor", "adxl345",
@@ -130,14 +131,14 @@ def test_fit_writes_a_profile_that_runs_and_knows_where_it_came_from(sdt_main, t
     assert code == 0, err
 
 
-def test_the_adxl357_pair_names_the_reference_as_the_one_off(registry):
+def test_the_adxl357_pair_names_the_reference_as_the_one_off(registry, readers):
     """DAQ12006: the ADXL357 reads gravity as 1 g (its raw mean vector, read here with idelib)
     and 1.6 x the piezo at the tone: the piezo's calibration is off, and its 100 g floor lies
     above the ADXL357's, so no floor there is judged."""
     raw = _raw("DAQ12006_000005.IDE", 80)[1:4]
     static = float(np.linalg.norm(raw.mean(axis=1)))
     assert static == pytest.approx(1.0, abs=0.01)
-    result = check_twin(load_pair(DATA / "DAQ12006_000005.IDE", "adxl357"),
+    result = check_twin(load_pair(DATA / "DAQ12006_000005.IDE", "adxl357", readers=readers),
                         registry.sensor("adxl357"))  # fmt: skip
     k = result.calibration
     assert k["static_g"] == pytest.approx(static, abs=0.005)  # the aligned overlap's mean
@@ -146,10 +147,10 @@ def test_the_adxl357_pair_names_the_reference_as_the_one_off(registry):
     assert all(f["reference_ug"] > f["device_ug"] for f in result.floors)
 
 
-def test_a_pair_at_rest_keeps_its_axes_as_mounted(registry):
+def test_a_pair_at_rest_keeps_its_axes_as_mounted(registry, readers):
     """XS5E25D40 is at rest (1 g on z, no shaker): no twin axis correlates with the device
     by 0.5, so no rotation is fitted to noise (which gave 28-40 degree 'angles')."""
-    pair = load_pair(DATA / "XS5E25D40.IDE", "adxl357")
+    pair = load_pair(DATA / "XS5E25D40.IDE", "adxl357", readers=readers)
     result = check_twin(pair, registry.sensor("adxl357"))
     a = result.alignment
     assert not a["rotation_estimated"]

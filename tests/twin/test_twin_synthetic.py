@@ -29,10 +29,10 @@ TRUE_ROTATION = Rotation.from_euler("zx", [2.0, 1.0], degrees=True).as_matrix()
 @pytest.fixture(scope="module")
 def truth(registry):
     base = registry.sensor("adxl345")
-    true = base.model_validate(
+    true = registry.bind(base.model_validate(  # the chain takes bound stages only
         {**base.content_dict(), "name": "adxl345-true", "noise_density_ug_rthz": NSD,
          "stages": [{"name": "scale", "params": {"error_pct": GAIN_PCT}}]}
-    )  # fmt: skip
+    ))  # fmt: skip
     t = np.arange(int(8 * FS_REF)) / FS_REF
     rng = np.random.default_rng(3)
     reference = 1e-6 * rng.normal(size=(3, t.size))  # a quiet piezo: 1 ug per sample

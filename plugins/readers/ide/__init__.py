@@ -1,8 +1,15 @@
-"""enDAQ / Slam Stick ``.IDE`` recordings (idelib): one axis per signal, named ``CHANNEL:AXIS``.
+"""enDAQ / Slam Stick ``.IDE`` recordings (idelib): the whole format, in this package.
 
-The rate is measured from the timestamps (:mod:`sdt_framework.data.timebase`),
-so a manifest's rate may differ from it by 0.1 % (a MEMS part's real rate is
-a few percent off its nominal one; 0.1 % is far below that).
+One axis per signal, named ``CHANNEL:AXIS``; the rate is measured from the
+timestamps (:mod:`sdt_framework.signals.timebase`), so a manifest's rate may
+differ from it by 0.1 % (a MEMS part's real rate is a few percent off its
+nominal one; 0.1 % is far below that). An IDE file is also a recorder file of
+channels (:mod:`sdt_framework.signals.channels`): ``channels`` lists them and
+``read_channel`` reads one channel's axes on one grid, which ``sdt twin``,
+``sdt validate-noise --recording`` and ``sdt dataset inspect`` use.
+
+- :mod:`.open`: idelib's import, refusing a file it could read only in part;
+- :mod:`.parse`: the channels, their parts and measured rates, and samples.
 """
 
 from __future__ import annotations
@@ -12,17 +19,18 @@ from pathlib import Path
 import numpy as np
 
 from sdt_framework import hookimpl
-from sdt_framework.data.readers import SignalInfo, finite
-from sdt_framework.data.recording import DataFileError
 from sdt_framework.errors import SDTError
+from sdt_framework.signals.channels import Channel, ChannelSignal, accelerometers, axis_variable
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.rules import SignalInfo, finite
 from sdt_framework.specs import ReaderSpec
 
 #: relative difference tolerated between a manifest rate and the timestamps' rate
 IDE_RATE_TOLERANCE = 0.001
 
 
-def _signal(path: Path, variable: str | None):
-    from sdt_framework.data.ide import read_variable  # idelib: on use only
+def _signal(path: Path, variable: str | None) -> ChannelSignal:
+    from .parse import read_variable  # idelib: on use only
 
     try:
         return read_variable(path, variable)
@@ -32,14 +40,14 @@ def _signal(path: Path, variable: str | None):
 
 def scan(path: Path) -> list[SignalInfo]:
     """Every acceleration axis, with its units and the rate of its channel's timestamps."""
-    from sdt_framework.data.ide import accelerometers, read_channels
+    from .parse import read_channels
 
     try:
         channels, notes = read_channels(path)
     except SDTError as exc:
         raise DataFileError(str(exc)) from None
     return [
-        SignalInfo(f"{c.id}:{s.axis}", 1, c.samples, c.rate_hz, s.units, "timestamps",
+        SignalInfo(axis_variable(c.id, s.axis), 1, c.samples, c.rate_hz, s.units, "timestamps",
                    IDE_RATE_TOLERANCE, f"{c.name} ({', '.join(c.parts) or '-'})",
                    "; ".join(notes) or None)
         for c in accelerometers(channels)
@@ -61,6 +69,20 @@ def read(path: Path, variable: str | None) -> np.ndarray:
     return finite(path, np.ascontiguousarray(_signal(path, variable).values))
 
 
+def channels(path: Path) -> tuple[list[Channel], tuple[str, ...]]:
+    """(every channel in id order, notes on how the file was read)."""
+    from .parse import read_channels
+
+    return read_channels(path)
+
+
+def read_channel(path: Path, channel: int, axes: list[str] | None = None) -> ChannelSignal:
+    """The ``axes`` (x/y/z or subchannel names; None: every one) of ``channel`` on one grid."""
+    from .parse import read_ide
+
+    return read_ide(path, channel, axes)
+
+
 @hookimpl
 def register_signal_readers(register):
     """Register the enDAQ IDE reader."""
@@ -74,5 +96,7 @@ def register_signal_readers(register):
             scan=scan,
             probe=probe,
             read=read,
+            channels=channels,
+            read_channel=read_channel,
         )
     )

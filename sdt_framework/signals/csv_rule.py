@@ -17,14 +17,14 @@
 4. **Values.** Every cell must be a finite number. The first that is not
    (ragged row, empty cell, text, NaN or inf, bytes that are not UTF-8) is
    named by line and column; a message quotes at most a short token of it
-   (:func:`~sdt_framework.data.tokens.quote`).
+   (:func:`~sdt_framework.signals.tokens.quote`).
 
 Parsing: pyarrow's CSV reader for files of up to :data:`PYARROW_MAX_COLUMNS`
 columns (2.7x faster than ``numpy.loadtxt`` on 240 000 rows x 21 columns),
 numpy's C ``loadtxt`` for wider ones (pyarrow took 44 s on 2 rows x 240 000
 columns that ``loadtxt`` reads in 1 s; ``benchmarks/bench_csv_signal.py``).
 Both read the same cells (quotes are not special); only when parsing fails is
-the file scanned line by line (:mod:`~sdt_framework.data.csv_bad_line`), to name
+the file scanned line by line (:mod:`~sdt_framework.signals.bad_line`), to name
 the offending line.
 """
 
@@ -42,8 +42,8 @@ import pyarrow as pa
 import pyarrow.csv as pacsv
 from numpy.typing import NDArray
 
-from .csv_bad_line import locate_problem, not_utf8
-from .recording import DataFileError
+from .bad_line import locate_problem, not_utf8
+from .errors import DataFileError
 from .tokens import brief, quote
 
 __all__ = ["MIN_TIME_SAMPLES", "CsvSignal", "is_time_axis", "read_csv_signal"]
@@ -120,7 +120,10 @@ def _parse_arrow(path: Path, skip: int, n_columns: int) -> NDArray[np.float64] |
         return None
     if table.num_columns != n_columns or any(c.null_count for c in table.columns):
         return None
-    return np.column_stack([c.to_numpy() for c in table.columns]).astype(np.float64, copy=False)
+    # one series per row in memory (rows x columns seen through .T): a column read whole
+    # is one contiguous series, so selecting every column in order copies nothing more
+    columns = np.stack([c.to_numpy() for c in table.columns]).astype(np.float64, copy=False)
+    return columns.T
 
 
 def _parse(path: Path, skip: int, labels: list[str], start: int) -> NDArray[np.float64]:
@@ -249,4 +252,5 @@ def _select(
             shown = ", ".join(quote(n) for n in names[:8]) + (", ..." if len(names) > 8 else "")
             raise DataFileError(f"{path}: no column {quote(name)}; the header has {shown}")
     index = [names.index(name) for name in wanted]
-    return CsvSignal(np.ascontiguousarray(series[index]), wanted, None)
+    chosen = series if index == list(range(len(series))) else series[index]
+    return CsvSignal(np.ascontiguousarray(chosen), wanted, None)

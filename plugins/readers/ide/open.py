@@ -27,8 +27,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..errors import SDTError
-from ..inputs import require_regular_file
+from sdt_framework.errors import SDTError
+from sdt_framework.inputs import require_regular_file
 
 __all__ = ["OpenedIde", "open_ide"]
 

@@ -29,9 +29,9 @@ from numpy.typing import NDArray
 
 from ..errors import SDTError
 from ..inputs import require_regular_file
-from .readers import SignalInfo, acceleration_units, fault_of, names
-from .recording import DataFileError
-from .signal_files import reader_for
+from .errors import DataFileError
+from .files import reader_for
+from .rules import SignalInfo, acceleration_units, fault_of, names
 from .tokens import quote
 
 __all__ = ["CLI_SPELLING", "TO_G", "FileSignal", "open_signal"]

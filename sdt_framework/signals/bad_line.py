@@ -4,7 +4,7 @@ Fast parsers (pyarrow, numpy) say that a file is bad, not where in terms a
 user can act on; this scan walks the physical lines once and describes the
 first one that is not UTF-8, has the wrong number of cells, or holds a cell
 that is empty, not a number, NaN or inf. Quoted cells are short tokens
-(:func:`~sdt_framework.data.tokens.quote`). Used by the CSV signal reader and
+(:func:`~sdt_framework.signals.tokens.quote`). Used by the CSV signal reader and
 the NLN-EMP reader.
 """
 

@@ -8,11 +8,12 @@ readers share a suffix (``.mat``: v5 and v7.3) or a file has none of the known
 suffixes, by each reader's ``sniff`` of the file's first bytes. A file no
 reader recognises is refused naming the formats that are.
 
-The data layer sits below the registry, so the readers table is handed down:
-a caller passes ``readers``, or :mod:`sdt_framework.registry` installs the
-default registry's table when imported (:mod:`sdt_framework.reader_table`).
-A manifest resolves each row's reader when it is opened and keeps the
-reader's ``read`` function, so a worker process never needs the registry.
+This layer sits below the registry, so the table of readers is handed down:
+every function here takes ``readers`` (``registry.signal_readers()``, as
+xarray's ``guess_engine`` asks the engines ``list_engines`` gives it); nothing
+here looks a registry up, and nothing installs one. A manifest resolves each
+row's reader when it is opened and keeps the reader's ``read`` function, so a
+worker process never needs the registry.
 """
 
 from __future__ import annotations
@@ -23,19 +24,17 @@ from typing import Any
 
 import numpy as np
 
-from ..reader_table import reader_table
-from .readers import SignalInfo, fault_of
-from .recording import DataFileError
+from .errors import DataFileError
+from .rules import SignalInfo, fault_of
 from .tokens import brief
 
 __all__ = [
     "SNIFF_BYTES",
+    "channel_reader",
     "known_formats",
-    "probe_signal",
     "read_signal",
     "reader_for",
     "scan_file",
-    "signal_shape",
 ]
 
 #: how many leading bytes of a file a reader's ``sniff`` sees
@@ -62,10 +61,11 @@ def known_formats(readers: Sequence[Any]) -> str:
     return ", ".join(f"{r.label} ({', '.join(r.suffixes)})" for r in readers)
 
 
-def reader_for(file: str | Path, readers: Sequence[Any] | None = None) -> Any:
-    """The reader of ``file``: by suffix, then by sniffing the first bytes; else refused."""
+def reader_for(file: str | Path, readers: Sequence[Any]) -> Any:
+    """The reader of ``file`` among ``readers`` (``ReaderSpec``, handed down by the caller):
+    by suffix, then by sniffing the first bytes; else refused."""
     file = Path(file)
-    readers = reader_table() if readers is None else list(readers)
+    readers = list(readers)
     suffix = file.suffix.lower()
     by_suffix = [r for r in readers if suffix in r.suffixes]
     if len(by_suffix) == 1 and by_suffix[0].sniff is None:
@@ -90,8 +90,19 @@ def reader_for(file: str | Path, readers: Sequence[Any] | None = None) -> Any:
     )
 
 
+def channel_reader(file: str | Path, readers: Sequence[Any]) -> Any | None:
+    """The reader of ``file`` if its format holds channels (``ReaderSpec.channels``: an IDE
+    file), else None: also when no reader recognises the file or it cannot be read, which
+    reading it then says."""
+    try:
+        reader = reader_for(file, readers)
+    except DataFileError:
+        return None
+    return reader if reader.channels is not None else None
+
+
 def scan_file(
-    file: str | Path, readers: Sequence[Any] | None = None, **options: Any
+    file: str | Path, readers: Sequence[Any], **options: Any
 ) -> tuple[Any, list[SignalInfo]]:
     """(reader, every signal of ``file``) for ``sdt dataset inspect FILE``; a file none of
     whose signals can be read (each has a fault: a header rate of 0 Hz, no samples) is
@@ -104,20 +115,9 @@ def scan_file(
     return reader, infos
 
 
-def probe_signal(
-    file: Path, variable: str | None, readers: Sequence[Any] | None = None, **options: Any
-) -> tuple[Any, SignalInfo]:
-    """(reader, the signal a manifest row names), reading as little as the format allows."""
-    reader = reader_for(file, readers)
-    return reader, reader.probe(Path(file), variable, **options)
-
-
-def signal_shape(file: Path, variable: str | None) -> tuple[tuple[int, int], str | None]:
-    """((n_acquisitions, n_samples), note) of a signal file, through its reader."""
-    info = probe_signal(file, variable)[1]
-    return info.shape, info.note
-
-
-def read_signal(file: Path, variable: str | None, **options: Any) -> np.ndarray:
-    """The samples of a signal file as float64 (n_acquisitions, n_samples), all finite."""
-    return reader_for(file).read(Path(file), variable, **options)
+def read_signal(
+    file: str | Path, readers: Sequence[Any], variable: str | None = None, **options: Any
+) -> np.ndarray:
+    """The samples of the signal ``variable`` of ``file`` (None: its only one) as float64
+    (n_acquisitions, n_samples), all finite, through its reader among ``readers``."""
+    return reader_for(file, readers).read(Path(file), variable, **options)

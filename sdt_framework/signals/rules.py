@@ -28,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from ..dtypes import describe_dtype, is_real
-from .recording import DataFileError, SignalTypeError
+from .errors import DataFileError, SignalTypeError
 from .tokens import quote, shown
 
 __all__ = [
