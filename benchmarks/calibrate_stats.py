@@ -7,7 +7,7 @@ ones are measured the same way: the first 12 s of the run's first column,
 broadband, in g: RMS, peak, Pearson kurtosis (normal = 3) and crest factor.
 Real records with kurtosis above 20 are common-mode glitches, not fault signal,
 and are left out (README of the statistics); the synthetic pump models such
-glitches (``synth_mix.add_glitch``), and the same rule leaves its glitched cells
+glitches (its ``mix.add_glitch``), and the same rule leaves its glitched cells
 out. Synthetic runs without a real
 counterpart (none in the default) are listed, not scored.
 
@@ -29,9 +29,8 @@ import time
 from pathlib import Path
 
 import numpy as np
-
-from sdt_framework.data import synth_model as m
-from sdt_framework.data.synth import generate_run
+from sdt_plugins.datasets.synthetic_pump import model as m
+from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 
 STATS_DIR = Path(__file__).resolve().parents[1] / "tests" / "data" / "nln_emp_stats"
 SPEEDS = {"Motor-4": "70", "Motor-2": "100"}

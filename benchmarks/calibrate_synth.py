@@ -30,10 +30,10 @@ from functools import cache
 
 import numpy as np
 from scipy import signal
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
+from sdt_plugins.datasets.synthetic_pump.generate import FS_HZ, generate_run
 
 from sdt_framework.chain import degrade
-from sdt_framework.data import open_synthetic
-from sdt_framework.data.synth import FS_HZ, generate_run
 from sdt_framework.registry import build_registry
 
 SOURCES = {

@@ -40,6 +40,7 @@ ALLOWED: dict[str, set[str]] = {
     "stages": {"errors", "seeding", "specs"},
     "parts": {"errors", "specs", "toml_files"},
     "sensor_files": {"errors", "specs", "toml_files"},
+    "machine_files": {"errors", "specs", "toml_files"},
     "registry_lookup": {"discovery", "errors", "parts", "specs", "stages"},
     "registry": {
         "discovery",
@@ -52,7 +53,7 @@ ALLOWED: dict[str, set[str]] = {
         "specs",
         "stages",
     },
-    "data": _BASE | _IO | {"reader_table"},
+    "data": _BASE | _IO | {"machine_files", "reader_table", "specs"},
     "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
     "features": {"arguments", "csv_cells", "errors", "io", "specs"},
     "edge": {"errors", "specs", "toml_files"},
@@ -63,9 +64,19 @@ ALLOWED: dict[str, set[str]] = {
     "twin": _IO | {"chain", "data", "specs", "toml_files"},
     "bench": _BASE
     | _IO
-    | {"chain", "data", "features", "parts", "registry", "specs", "stages", "toml_files"},
+    | {
+        "chain",
+        "data",
+        "features",
+        "machine_files",
+        "parts",
+        "registry",
+        "specs",
+        "stages",
+        "toml_files",
+    },
     "verdict": {"bench", "errors", "seeding"},
-    "severity": {"data", "errors", "seeding", "toml_files", "verdict"},
+    "severity": {"errors", "seeding", "specs", "toml_files", "verdict"},
     "explore": _BASE
     | _IO
     | {
@@ -88,6 +99,7 @@ ALLOWED: dict[str, set[str]] = {
         "edge",
         "explore",
         "features",
+        "machine_files",
         "registry",
         "severity",
         "specs",

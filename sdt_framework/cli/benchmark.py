@@ -245,12 +245,14 @@ def _locked_run(
     from .planned import check_size, print_skipped
 
     plan = plan_benchmark(config, registry(ctx))
-    if config.zones:  # the zone tables are checked before any run (severity figures)
+    if config.zones or plan.machines:  # zone tables checked before any run (severity)
         from ..severity import assign_tables
 
         machines = sorted({r.machine for r in plan.recordings})
         where, window_s = "[benchmark] zones", config.window_s
-        assign_tables(machines, configured=config.zones, where=where, window_s=window_s)
+        assign_tables(
+            machines, configured=config.zones, where=where, window_s=window_s, specs=plan.machines
+        )
     size = check_size(
         plan,
         out_dir,

@@ -14,11 +14,14 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..errors import SDTError
+
+if TYPE_CHECKING:
+    from ..specs import MachineSpec
 
 __all__ = ["DataFileError", "Dataset", "Recording", "Skipped", "measurement_groups"]
 
@@ -138,7 +141,9 @@ class Dataset:
 
     Subclasses only discover recordings; loading, failure bookkeeping and the
     summary live here once. ``notes`` are things a reader did to the data that
-    a user should know (a CSV time column dropped), one line each.
+    a user should know (a CSV time column dropped), one line each. ``machines``
+    are the machines the dataset describes (shaft speed, bearings, zone table),
+    by the name its recordings give: what severity and the report read.
     """
 
     def __init__(
@@ -147,11 +152,13 @@ class Dataset:
         recordings: list[Recording],
         skipped: list[Skipped],
         notes: list[str] | None = None,
+        machines: dict[str, MachineSpec] | None = None,
     ) -> None:
         self.name = name
         self._recordings = list(recordings)
         self._skipped = list(skipped)
         self.notes = list(notes or [])
+        self.machines: dict[str, MachineSpec] = dict(machines or {})
 
     def recordings(self) -> list[Recording]:
         """Every usable recording (metadata only; nothing is read)."""

@@ -17,9 +17,9 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.csv as pacsv
 
-from .csv_bad_line import locate_problem
-from .recording import DataFileError
-from .tokens import quote
+from sdt_framework.data import DataFileError
+from sdt_framework.data.csv_bad_line import locate_problem
+from sdt_framework.data.tokens import quote
 
 __all__ = ["CsvHeader", "parse_nln_csv", "read_header"]
 
