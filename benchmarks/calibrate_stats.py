@@ -26,6 +26,7 @@ from __future__ import annotations
 import argparse
 import csv
 import time
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -33,13 +34,18 @@ from sdt_plugins.datasets.synthetic_pump import model as m
 from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 
 STATS_DIR = Path(__file__).resolve().parents[1] / "tests" / "data" / "nln_emp_stats"
-SPEEDS = {"Motor-4": "70", "Motor-2": "100"}
+#: each machine's speed folder (the paper's operating points, from the rig's machine file)
+SPEEDS = {name: machine.speed for name, machine in m.MACHINES.items()}
 STATS = ("rms_g", "peak_g", "kurtosis_pearson", "crest_factor")
+#: the bounds and the glitch rule, with their sources (targets/stats_bounds.toml)
+TARGETS = tomllib.loads(
+    (Path(__file__).parent / "targets" / "stats_bounds.toml").read_text(encoding="utf-8")
+)
 #: statistic -> the factor a synthetic cell must be within, and the share the issue asks for
-BOUNDS = {"rms_g": (1.5, 0.90), "kurtosis_pearson": (1.5, 0.90), "crest_factor": (1.5, 0.85),
-          "peak_g": (2.0, 0.80)}  # fmt: skip
-GLITCH_KURTOSIS = 20.0
-RATIO_TOLERANCE, RATIO_SHARE = 0.25, 0.85
+BOUNDS = {stat: (bound["factor"], bound["share"]) for stat, bound in TARGETS["cells"].items()}
+GLITCH_KURTOSIS = TARGETS["glitch_kurtosis"]
+RATIO_TOLERANCE = TARGETS["ratio_to_healthy"]["tolerance"]
+RATIO_SHARE = TARGETS["ratio_to_healthy"]["share"]
 SECONDS = 12.0
 
 
