@@ -200,13 +200,15 @@ class Dataset:
         return self._skipped[before:]
 
     def describe(self) -> dict[str, Any]:
-        """Summary for ``sdt dataset inspect``: recordings, skipped entries and counts."""
+        """Summary for ``sdt dataset inspect``: recordings, skipped entries, notes, the
+        machines the dataset describes and counts."""
         recs = self._recordings
         return {
             "dataset": self.name,
             "recordings": [r.metadata() for r in recs],
             "skipped": [s.as_dict() for s in self._skipped],
             "notes": list(self.notes),
+            "machines": {n: m.model_dump(mode="json") for n, m in self.machines.items()},
             "summary": {
                 "recordings": len(recs),
                 "runs": len(self.runs()),
