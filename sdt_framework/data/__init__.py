@@ -9,7 +9,7 @@ open_dataset
 open_manifest
     The manifest reader (registered as the plugin ``manifest``); the NLN-EMP
     reader and the synthetic pump's generator are their plugins' own packages
-    (``sdt_plugins.datasets.nln_emp``, ``sdt_plugins.datasets.synthetic_pump``).
+    (``plugins/datasets/nln_emp/``, ``plugins/datasets/synthetic_pump/``).
 write_nln_emp
     Write any dataset in the NLN-EMP CSV layout.
 open_signal, FileSignal

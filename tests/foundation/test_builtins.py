@@ -26,6 +26,8 @@ def plugin_modules() -> list[str]:
             continue
         if "def register_" in path.read_text():
             parts = path.relative_to(ROOT / "plugins").with_suffix("").parts
+            if parts[-1] == "__init__":  # a plugin that is a package: the package is the module
+                parts = parts[:-1]
             found.append(".".join(("sdt_plugins", *parts)))
     return found
 
