@@ -18,9 +18,10 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+from sdt_plugins.datasets.nln_emp import open_nln_emp
+from sdt_plugins.datasets.nln_emp.csv_file import parse_nln_csv
 
-from sdt_framework.data import open_nln_emp, write_nln_emp
-from sdt_framework.data.nln_emp_csv import parse_nln_csv
+from sdt_framework.data import write_nln_emp
 from sdt_framework.data.recording import Dataset, Recording
 
 

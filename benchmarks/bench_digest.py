@@ -15,7 +15,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from sdt_framework.data import open_synthetic, write_nln_emp
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
+
+from sdt_framework.data import write_nln_emp
 from sdt_framework.data.digest import SETTLE_NS, file_digest
 
 

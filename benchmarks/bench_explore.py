@@ -27,10 +27,10 @@ import time
 from pathlib import Path
 
 import numpy as np
+from sdt_plugins.datasets.synthetic_pump.dataset import open_synthetic
 
 from sdt_framework.bench.featurise import FeatureJob, featurise_recording, noise_seed
 from sdt_framework.chain import degrade
-from sdt_framework.data.synth_dataset import open_synthetic
 from sdt_framework.explore import build_points, design_points, load_sweep
 from sdt_framework.features import extract
 from sdt_framework.registry import build_registry

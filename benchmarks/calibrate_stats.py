@@ -7,7 +7,7 @@ ones are measured the same way: the first 12 s of the run's first column,
 broadband, in g: RMS, peak, Pearson kurtosis (normal = 3) and crest factor.
 Real records with kurtosis above 20 are common-mode glitches, not fault signal,
 and are left out (README of the statistics); the synthetic pump models such
-glitches (``synth_mix.add_glitch``), and the same rule leaves its glitched cells
+glitches (its ``mix.add_glitch``), and the same rule leaves its glitched cells
 out. Synthetic runs without a real
 counterpart (none in the default) are listed, not scored.
 
@@ -26,21 +26,26 @@ from __future__ import annotations
 import argparse
 import csv
 import time
+import tomllib
 from pathlib import Path
 
 import numpy as np
-
-from sdt_framework.data import synth_model as m
-from sdt_framework.data.synth import generate_run
+from sdt_plugins.datasets.synthetic_pump import model as m
+from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 
 STATS_DIR = Path(__file__).resolve().parents[1] / "tests" / "data" / "nln_emp_stats"
-SPEEDS = {"Motor-4": "70", "Motor-2": "100"}
+#: each machine's speed folder (the paper's operating points, from the rig's machine file)
+SPEEDS = {name: machine.speed for name, machine in m.MACHINES.items()}
 STATS = ("rms_g", "peak_g", "kurtosis_pearson", "crest_factor")
+#: the bounds and the glitch rule, with their sources (targets/stats_bounds.toml)
+TARGETS = tomllib.loads(
+    (Path(__file__).parent / "targets" / "stats_bounds.toml").read_text(encoding="utf-8")
+)
 #: statistic -> the factor a synthetic cell must be within, and the share the issue asks for
-BOUNDS = {"rms_g": (1.5, 0.90), "kurtosis_pearson": (1.5, 0.90), "crest_factor": (1.5, 0.85),
-          "peak_g": (2.0, 0.80)}  # fmt: skip
-GLITCH_KURTOSIS = 20.0
-RATIO_TOLERANCE, RATIO_SHARE = 0.25, 0.85
+BOUNDS = {stat: (bound["factor"], bound["share"]) for stat, bound in TARGETS["cells"].items()}
+GLITCH_KURTOSIS = TARGETS["glitch_kurtosis"]
+RATIO_TOLERANCE = TARGETS["ratio_to_healthy"]["tolerance"]
+RATIO_SHARE = TARGETS["ratio_to_healthy"]["share"]
 SECONDS = 12.0
 
 

@@ -26,55 +26,24 @@ from __future__ import annotations
 
 import argparse
 import time
+import tomllib
 from functools import cache
+from pathlib import Path
 
 import numpy as np
 from scipy import signal
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
+from sdt_plugins.datasets.synthetic_pump.generate import FS_HZ, generate_run
 
 from sdt_framework.chain import degrade
-from sdt_framework.data import open_synthetic
-from sdt_framework.data.synth import FS_HZ, generate_run
 from sdt_framework.registry import build_registry
 
-SOURCES = {
-    "A": "felcoslop/TP_CONFIABILIDADE@e73e8a85 code/resultados/tabelas/features.csv",
-    "B": "CYPHr007/PILAR@5252bc18 nln_emp_features.csv",
-    "A/B": "A's 1-9 kHz band RMS over B's overall RMS, both Motor-2 ch1 healthy 1 at 75 %",
-    "P": "the paper (shared/seed/000), section 2.2, Fig. 2 and Table 1 (reference range +-80 g)",
-}
-
-# figure | published | source | check | measure (what machine runs channel band)
-# check: "value" = within a factor 1.5 of the published value, "<=" / ">=" = a bound
-TABLE = """
-M4 ch2 10-200 Hz, healthy mean (g)          | 0.0486 | A   | value | mean M4 H ch2 10-200
-M4 ch2 10-200 Hz, healthy CV run to run     | 0.385  | A   | value | cv M4 H ch2 10-200
-M4 ch5 10-200 Hz, healthy mean (g)          | 0.0889 | A   | value | mean M4 H ch5 10-200
-M4 ch5 10-200 Hz, healthy CV run to run     | 0.045  | A   | value | cv M4 H ch5 10-200
-M4 ch1 10-300 Hz, healthy mean (g)          | 0.0937 | A   | value | mean M4 H ch1 10-300
-M4 ch1 10-300 Hz, healthy CV run to run     | 0.091  | A   | value | cv M4 H ch1 10-300
-M4 ch5 10-200 Hz, CV between acquisitions   | 0.026  | A   | value | acv M4 H1 ch5 10-200
-unbalance motor 1 / healthy, ch2 10-200 Hz  | 0.776  | A   | value | ratio M4 UM1/H ch2 10-200
-unbalance motor 6 / 1, ch2 10-200 Hz        | 2.51   | A   | value | ratio M4 UM6/UM1 ch2 10-200
-unbalance motor 1-4, ch2 10-200 Hz, CV      | 0.062  | A   | value | cv M4 UM14 ch2 10-200
-unbalance pump 1 / healthy, ch5 10-200 Hz   | 1.024  | A   | value | ratio M4 UP1/H ch5 10-200
-unbalance pump 3 / 1, ch5 10-200 Hz         | 1.146  | A   | value | ratio M4 UP3/UP1 ch5 10-200
-align parallel 1 / healthy, ch1 10-300 Hz   | 1.21   | A   | value | ratio M4 AP1/H ch1 10-300
-align parallel 4 / 1, ch1 10-300 Hz         | 2.73   | A   | value | ratio M4 AP4/AP1 ch1 10-300
-align angular 5 / healthy, ch1 10-300 Hz    | 1.18   | A   | <=    | ratio M4 AA5/H ch1 10-300
-M2 ch1 overall RMS, healthy mean (g)        | 0.534  | B   | value | mean M2 H ch1 all
-M2 ch1 overall RMS, healthy CV run to run   | 0.207  | B   | value | cv M2 H ch1 all
-M2 ch1 overall RMS, CV between acquisitions | 0.04   | B   | value | acv M2 H1 ch1 all
-M2 ch1 healthy 1, 1-9 kHz RMS / overall RMS | 0.96   | A/B | value | share M2 H1 ch1 1k-9k
-bearing bpfi 1 / healthy, ch1 overall       | 0.887  | B   | value | ratio M2 BI1/H ch1 all
-bearing bpfi 3 / 1, ch1 overall             | 1.34   | B   | value | ratio M2 BI3/BI1 ch1 all
-bearing bpfo 3 / 1, ch1 overall             | 1.13   | B   | value | ratio M2 BO3/BO1 ch1 all
-impeller (mean of 3) / healthy, ch1 all     | 0.75   | B   | value | ratio M2 IMP/H ch1 all
-impeller 1-3, ch1 overall RMS, CV           | 0.071  | B   | value | cv M2 IMP ch1 all
-bearing pump (mean of 3) / healthy, ch1 all   | 0.91   | B   | value | ratio M2 BP/H ch1 all
-cavitation suction 4 ch1: ADXL345 peak/16 g  | 1.0    | P   | >=    | sdt M4 adxl345 ch1 16
-cavitation suction 4 ch1: ADXL357 peak/40 g  | 1.0    | P   | <=    | sdt M4 adxl357 ch1 40
-cavitation suction 4 ch1: raw peak/80 g      | 1.0    | P   | <=    | peak M4 H1 ch1 80
-"""
+#: the published figures, their sources and checks (targets/published_figures.toml: each
+#: figure's source, and how it follows from the source's run means where it gives them)
+TARGETS = tomllib.loads(
+    (Path(__file__).parent / "targets" / "published_figures.toml").read_text(encoding="utf-8")
+)
+SOURCES: dict[str, str] = TARGETS["sources"]
 
 
 def _levels(name: str, *levels: int) -> list[str]:
@@ -174,7 +143,11 @@ def evaluate(spec: str, seed: int, duration: float) -> float:
 
 
 def figures() -> list[tuple[str, ...]]:
-    return [tuple(c.strip() for c in line.split("|")) for line in TABLE.strip().splitlines()]
+    """(figure, published, source, check, measure) of every target, in the file's order."""
+    return [
+        (f["name"], str(f["published"]), f["source"], f["check"], f["measure"])
+        for f in TARGETS["figure"]
+    ]
 
 
 def check(kind: str, published: float, value: float) -> str:

@@ -29,8 +29,7 @@ from pathlib import Path
 import numpy as np
 from nptdms import ChannelObject, TdmsWriter
 from scipy.signal import resample_poly
-
-from sdt_framework.data import open_synthetic
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 DAQ_RATE_HZ = 25600.0  # an NI 9234's default: 51.2 kHz / 2
 UP, DOWN = 32, 25  # 20 kHz * 32 / 25 = 25.6 kHz

@@ -20,13 +20,13 @@ from __future__ import annotations
 import os
 
 import numpy as np
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 from sklearn.ensemble import RandomForestClassifier
 from sklearn.model_selection import GroupKFold, cross_val_score
 from sklearn.pipeline import Pipeline
 from sklearn.preprocessing import StandardScaler
 
 from sdt_framework import build_registry
-from sdt_framework.data import open_synthetic
 from sdt_framework.sklearn import FeatureExtractor, SensorTwin, window_rows
 
 DURATION_S = float(os.environ.get("SDT_EXAMPLE_DURATION_S", "4"))

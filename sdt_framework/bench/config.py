@@ -18,6 +18,7 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator
 
 from ..errors import SpecFileError, one_line
 from ..io import atomic_write_text
+from ..machine_files import machines_from_tables
 from ..toml_files import read_toml, validate_file
 from .config_paths import relative_to, resolve_written, written_by_sdt
 
@@ -110,6 +111,12 @@ class BenchmarkConfig(BaseModel):
         "'iso10816-3-group2-flexible'}: a built-in name, FILE.toml or FILE.toml#NAME "
         "(default: the built-in choice for the synthetic pump and NLN-EMP, docs/severity.md).",
     )
+    machine_specs: str | dict[str, dict[str, Any]] | None = Field(
+        default=None,
+        description="Your machines (shaft speed, bearings with geometry, zone table): a "
+        "machine file's path, or [benchmark.machine_specs.NAME] tables; over the dataset's "
+        "own (docs/severity.md).",
+    )
     repeats: int = Field(default=10, ge=1, description="Repetitions N (noise and seeds).")
     units: int | None = Field(
         default=None,
@@ -169,8 +176,17 @@ class BenchmarkConfig(BaseModel):
 
 
 def validate_config(data: dict[str, Any], where: str) -> BenchmarkConfig:
-    """``data`` as a :class:`BenchmarkConfig`; an error names ``where``, the field and the value."""
-    return validate_file(BenchmarkConfig, data, where, unknown="unknown option", show_input=True)
+    """``data`` as a :class:`BenchmarkConfig`; an error names ``where``, the field and the value.
+
+    Machines written as ``[benchmark.machine_specs.NAME]`` tables are checked here
+    (:func:`~sdt_framework.machine_files.machines_from_tables`): a missing field or an
+    impossible bearing names this file. A machine file named by path is read when the
+    benchmark is planned (a results folder moved without it keeps its configuration).
+    """
+    config = validate_file(BenchmarkConfig, data, where, unknown="unknown option", show_input=True)
+    if isinstance(config.machine_specs, dict):
+        machines_from_tables(config.machine_specs, where, "machine_specs.")
+    return config
 
 
 def load_config(path: str | os.PathLike[str] | None, overrides: dict[str, Any]) -> BenchmarkConfig:

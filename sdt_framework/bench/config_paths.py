@@ -28,7 +28,8 @@ __all__ = [
 
 #: Settings holding a file-system path.
 PATH_SETTINGS = ("data", "allocation")  # cache_dir is not written (bench.config)
-# and ``zones``: each value naming a zone-table file (``FILE.toml`` or ``FILE.toml#NAME``)
+# and ``zones``: each value naming a zone-table file (``FILE.toml`` or ``FILE.toml#NAME``);
+# ``machine_specs``: a machine file's path, or tables whose ``zone_table`` may name a file
 #: First-line prefixes of the configuration files sdt writes.
 WRITTEN_HEADERS = ("# Resolved by sdt benchmark", "# The sweep as run by sdt explore")
 
@@ -55,6 +56,23 @@ def _zone_files(settings: dict[str, Any], move: Any) -> dict[str, Any]:
     return {**settings, "zones": moved}
 
 
+def _machine_files(settings: dict[str, Any], move: Any) -> dict[str, Any]:
+    """``machine_specs`` with ``move`` applied to its path, or to each table's zone-table file."""
+    given = settings.get("machine_specs")
+    if isinstance(given, str):
+        return {**settings, "machine_specs": move(given)}
+    if not isinstance(given, dict):
+        return settings
+    moved = {}
+    for name, table in given.items():
+        spec = table.get("zone_table") if isinstance(table, dict) else None
+        path, sep, rest = spec.partition("#") if isinstance(spec, str) else ("", "", "")
+        moved[name] = (
+            {**table, "zone_table": move(path) + sep + rest} if path.endswith(".toml") else table
+        )
+    return {**settings, "machine_specs": moved}
+
+
 def relative_to(settings: dict[str, Any], folder: str | os.PathLike[str]) -> dict[str, Any]:
     """``settings`` with every path setting written relative to ``folder``."""
     start = os.path.abspath(folder)
@@ -66,7 +84,7 @@ def relative_to(settings: dict[str, Any], folder: str | os.PathLike[str]) -> dic
     for name in PATH_SETTINGS:
         if isinstance(out.get(name), str):
             out[name] = move(out[name])
-    return _zone_files(out, move)
+    return _machine_files(_zone_files(out, move), move)
 
 
 def resolve_written(settings: dict[str, Any], folder: str | os.PathLike[str]) -> dict[str, Any]:
@@ -81,4 +99,4 @@ def resolve_written(settings: dict[str, Any], folder: str | os.PathLike[str]) ->
     for name in PATH_SETTINGS:
         if isinstance(out.get(name), str):
             out[name] = move(out[name])
-    return _zone_files(out, move)
+    return _machine_files(_zone_files(out, move), move)

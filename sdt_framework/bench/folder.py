@@ -79,9 +79,10 @@ DERIVED_ENTRIES = (*EXPLORE_FILES, "comparison.csv")
 _DERIVED = re.compile(r"^comparison_vs_.+\.csv$")
 #: Settings that change how a benchmark runs, never what it finds.
 RUN_ONLY_SETTINGS = frozenset({"jobs", "backend", "scheduler", "cache_dir", "report"})
-#: Settings that only grade what the runs found (the severity figures' zone tables):
-#: changing them resumes the folder, and the next report grades by the new tables.
-GRADING_SETTINGS = frozenset({"zones"})
+#: Settings that only grade what the runs found (the severity figures' zone tables, the
+#: machines' bearings and speeds): changing them resumes the folder, and the next report
+#: grades and draws by the new ones.
+GRADING_SETTINGS = frozenset({"zones", "machine_specs"})
 _OWN = frozenset({MARKER, LOCK, "runs", *OUTPUT_FILES, *REPORT_ENTRIES, *DERIVED_ENTRIES})
 _TEMPORARY = re.compile(r"^\..+\.tmp$")  # left by an atomic write cut short (io.atomic_path)
 

@@ -27,11 +27,12 @@ from ..data.recording import Dataset, Recording
 from ..errors import SDTError
 from ..features import resolve_feature_set
 from ..registry import Registry
-from ..specs import ClassifierSpec, FeatureSetSpec, SensorSpec
+from ..specs import ClassifierSpec, FeatureSetSpec, MachineSpec, SensorSpec
 from ..stages import StageSpec
 from ..stages.units import drawn_stages
 from .config import BenchmarkConfig
 from .lengths import check_lengths
+from .machines import benchmark_machines
 from .node_samples import Node, resolve_nodes
 from .nodes import find_nodes, node_sensors
 from .scenarios import Run, check_allocation, load_allocation, rule_allocation
@@ -64,6 +65,8 @@ class Plan:
     sample_nodes: list[Node] = field(default_factory=list)
     #: with units: the stages the sensors' tolerances name (a drawn unit adds and binds them)
     stages: dict[str, StageSpec] = field(default_factory=dict)
+    #: the machines (speed, bearings, zone table): the dataset's, the config's over them
+    machines: dict[str, MachineSpec] = field(default_factory=dict)
 
     def run_groups(self) -> list[tuple[Transfer, bool]]:
         """(pair, is a transfer) of every group of runs: each sensor trained and tested on
@@ -181,6 +184,7 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
         transfers,
         sample_nodes,
         _unit_stages(sensors, registry) if config.units is not None else {},
+        benchmark_machines(config, dataset),  # a bad machine file: one line, before any run
     )
 
 

@@ -236,12 +236,15 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
     bars = Bars()
 
     def check(plan: Any) -> None:
-        if config.zones:  # the zone tables are checked before any run (severity figures)
+        if config.zones or plan.machines:  # zone tables checked before any run (severity)
             from ..severity import assign_tables
 
             machines = sorted({r.machine for r in plan.recordings})
             where, window_s = "[benchmark] zones", config.window_s
-            assign_tables(machines, configured=config.zones, where=where, window_s=window_s)
+            assign_tables(
+                machines, configured=config.zones, where=where, window_s=window_s,
+                specs=plan.machines,
+            )  # fmt: skip
 
     def started(plan: Any, size: Any) -> None:
         claimed.append(True)

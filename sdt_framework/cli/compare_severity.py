@@ -19,27 +19,35 @@ def severity_agreement(
     """Zone agreement of ``folder``'s sensors with ``reference`` (the comparison's baseline).
 
     The tables: ``--zones``, else the folder's ``[benchmark] zones``, else the
-    defaults. With ``registry``, each sensor's V_RMS band is checked against
-    its chain.
+    one each machine's spec names (the folder's dataset's machines and its
+    config's ``machine_specs``, :func:`~sdt_framework.report.machines.folder_machines`).
+    With ``registry``, each sensor's V_RMS band is checked against its chain.
 
     None and the reason when it cannot be computed (no features, no table, no
     windows of ``reference``); a bad ``--zones`` value is an error.
     """
+    from ..report.machines import folder_machines, no_spec_line
     from ..severity import assign_tables, sensor_bandwidths, zone_agreement
 
     features = folder.features
     if features is None or features.empty or "V_RMS" not in features.columns:
         return None, "features.parquet with V_RMS is missing: no zone agreement"
     config = folder.config
+    machines = sorted(features["machine"].unique())
+    specs = folder_machines(folder, registry).specs
     assignments = assign_tables(
-        sorted(features["machine"].unique()),
+        machines,
         zones or [],
         configured=config.zones if config is not None else None,
         where=f"{folder.path / 'config.toml'}: [benchmark] zones",
         window_s=config.window_s if config is not None else None,
+        specs=specs,
     )
     if not assignments:
-        return None, "no zone table for these machines; give --zones TABLE or MACHINE=TABLE"
+        lacking = "; ".join(no_spec_line(m) for m in machines if m not in specs)
+        return None, "no zone table for these machines; give --zones TABLE or MACHINE=TABLE" + (
+            f" ({lacking})" if lacking else ""
+        )
     if not (features["sensor"] == reference).any():
         return None, f"features.parquet has no windows of {reference!r} to grade against"
     bandwidths = None

@@ -84,7 +84,6 @@ def synth(
     """
     from ..data import open_dataset, write_nln_emp  # heavy (scipy, pyarrow): on use only
     from ..data.sizes import synth_cost
-    from ..data.synth import FS_HZ
     from .guards import check_cost, check_output_folder, os_errors
 
     if duration is not None and not (math.isfinite(duration) and duration > 0.2):
@@ -94,12 +93,13 @@ def synth(
         given = {"seed": seed, "acquisitions": acquisitions, "duration": duration}
         options = {key: value for key, value in given.items() if value is not None}
         dataset = open_dataset(registry(ctx), "synthetic-pump", **options)
+        recordings = dataset.recordings()
         cost = synth_cost(
-            len(dataset.recordings()),
+            len(recordings),
             len(dataset.channels),
             dataset.acquisitions,
             dataset.duration,
-            FS_HZ,
+            recordings[0].sampling_rate_hz,  # the generator's rate, as its recordings give it
         )
         check_output_folder(out, "--out")
         check_cost("dataset synth", cost, yes, "--duration or --acquisitions", folder=out)

@@ -7,9 +7,10 @@ Recording, Dataset, Skipped, DataFileError
 open_dataset, load_dataset
     Open a registered dataset by name, an NLN-EMP folder or a manifest; load one
     dataset spec (a manifest gets the registry's signal readers, handed down).
-open_nln_emp, open_manifest, open_synthetic
-    The three built-in readers (registered as plugins ``nln-emp``, ``manifest``,
-    ``synthetic-pump``).
+open_manifest
+    The manifest reader (registered as the plugin ``manifest``); the NLN-EMP
+    reader and the synthetic pump's generator are their plugins' own packages
+    (``plugins/datasets/nln_emp/``, ``plugins/datasets/synthetic_pump/``).
 write_nln_emp
     Write any dataset in the NLN-EMP CSV layout.
 
@@ -26,21 +27,16 @@ from ..lazy import lazy_exports
 if TYPE_CHECKING:
     from .cache import ArrayCache, default_cache_dir
     from .manifest import open_manifest
-    from .nln_emp import PAPER_SUBSETS, open_nln_emp, parse_condition
     from .open import load_dataset, open_dataset, write_nln_emp
     from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
-    from .synth_dataset import SyntheticPump, open_synthetic
 
 #: public name -> the submodule that defines it. Loaded on first use (PEP 562), as
-#: scipy loads its subpackages: a command that opens a manifest does
-#: not load the generator, and with it scipy.signal (about 1 s at every ``sdt`` start)
+#: scipy loads its subpackages: a command that opens a manifest does not load
+#: pyarrow's writer or the manifest's machinery at every ``sdt`` start
 _WHERE = {
     "ArrayCache": "cache",
     "default_cache_dir": "cache",
     "open_manifest": "manifest",
-    "PAPER_SUBSETS": "nln_emp",
-    "open_nln_emp": "nln_emp",
-    "parse_condition": "nln_emp",
     "load_dataset": "open",
     "open_dataset": "open",
     "write_nln_emp": "open",
@@ -49,26 +45,19 @@ _WHERE = {
     "Recording": "recording",
     "Skipped": "recording",
     "measurement_groups": "recording",
-    "SyntheticPump": "synth_dataset",
-    "open_synthetic": "synth_dataset",
 }
 
 __all__ = [
-    "PAPER_SUBSETS",
     "ArrayCache",
     "DataFileError",
     "Dataset",
     "Recording",
     "Skipped",
-    "SyntheticPump",
     "default_cache_dir",
     "load_dataset",
     "measurement_groups",
     "open_dataset",
     "open_manifest",
-    "open_nln_emp",
-    "open_synthetic",
-    "parse_condition",
     "write_nln_emp",
 ]
 

@@ -23,7 +23,9 @@ full_scale_g (optional)   a reader's option: g at full scale of an integer WAV
 ========================  =====================================================
 
 A file's rate and units, where it holds them, must agree with the row's
-(:mod:`.manifest_files`); an empty field takes the file's.
+(:mod:`.manifest_files`); an empty field takes the file's. A ``machines.toml``
+beside the manifest describes its machines (shaft speed, bearings, zone table:
+:mod:`sdt_framework.machine_files`), so severity and the report can read them.
 
 Rows sharing (machine, recording_id, channel) are the acquisitions of one
 :class:`Recording`, in manifest order; its ``recording_id`` is
@@ -49,6 +51,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..inputs import not_regular
+from ..machine_files import MACHINE_FILE, load_machine_file
 from ..signals.tokens import quote
 from .manifest_checks import refuse_identical, refuse_shared_ids, refuse_signal_twice
 from .manifest_files import probe_row, reconcile
@@ -236,10 +239,27 @@ def open_manifest(
     if len(notes) > 1:
         notes = [f"{len(notes)} CSV files had a time column, dropped; first: {notes[0]}"]
     notes += list(dict.fromkeys(other_notes))
-    dataset = Dataset(name, recordings, skipped, notes)
+    machines = _machines_beside(manifest, {r.machine for r in recordings}, notes)
+    dataset = Dataset(name, recordings, skipped, notes, machines)
     if validate:
         dataset.validate()
     return dataset
+
+
+def _machines_beside(manifest: Path, names: set[str], notes: list[str]) -> dict[str, Any]:
+    """The machines of ``machines.toml`` beside ``manifest`` (none without one); a machine
+    the file describes that no row names is a note, not an error (a misspelt name)."""
+    path = manifest.parent / MACHINE_FILE
+    if not path.exists():
+        return {}
+    machines = load_machine_file(path)
+    unused = sorted(set(machines) - names)
+    if unused:
+        notes.append(
+            f"{path} describes {', '.join(map(quote, unused))}, which no manifest row names "
+            f"(machines: {', '.join(map(quote, sorted(names)))})"
+        )
+    return machines
 
 
 def _load_rows(rows: tuple[tuple[Path, str | None, str, Any, tuple], ...]) -> np.ndarray:

@@ -14,11 +14,14 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..signals.errors import DataFileError, SignalTypeError
+
+if TYPE_CHECKING:
+    from ..specs import MachineSpec
 
 __all__ = [
     "DataFileError",
@@ -132,7 +135,9 @@ class Dataset:
 
     Subclasses only discover recordings; loading, failure bookkeeping and the
     summary live here once. ``notes`` are things a reader did to the data that
-    a user should know (a CSV time column dropped), one line each.
+    a user should know (a CSV time column dropped), one line each. ``machines``
+    are the machines the dataset describes (shaft speed, bearings, zone table),
+    by the name its recordings give: what severity and the report read.
     """
 
     def __init__(
@@ -141,11 +146,13 @@ class Dataset:
         recordings: list[Recording],
         skipped: list[Skipped],
         notes: list[str] | None = None,
+        machines: dict[str, MachineSpec] | None = None,
     ) -> None:
         self.name = name
         self._recordings = list(recordings)
         self._skipped = list(skipped)
         self.notes = list(notes or [])
+        self.machines: dict[str, MachineSpec] = dict(machines or {})
 
     def recordings(self) -> list[Recording]:
         """Every usable recording (metadata only; nothing is read)."""
@@ -187,13 +194,15 @@ class Dataset:
         return self._skipped[before:]
 
     def describe(self) -> dict[str, Any]:
-        """Summary for ``sdt dataset inspect``: recordings, skipped entries and counts."""
+        """Summary for ``sdt dataset inspect``: recordings, skipped entries, notes, the
+        machines the dataset describes and counts."""
         recs = self._recordings
         return {
             "dataset": self.name,
             "recordings": [r.metadata() for r in recs],
             "skipped": [s.as_dict() for s in self._skipped],
             "notes": list(self.notes),
+            "machines": {n: m.model_dump(mode="json") for n, m in self.machines.items()},
             "summary": {
                 "recordings": len(recs),
                 "runs": len(self.runs()),

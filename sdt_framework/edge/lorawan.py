@@ -1,7 +1,8 @@
 """LoRaWAN framing and the regional data-rate plans EU868 and US915.
 
-Frame overhead (LoRa Alliance, *TS001-1.0.4 LoRaWAN L2 1.0.4 Specification*,
-section 4, Tables 2 and 6; the same layout as LoRaWAN 1.0.3 section 4):
+The figures are data, ``lorawan.toml`` beside this module, each table with its
+source: the frame overhead (LoRa Alliance, *TS001-1.0.4 LoRaWAN L2 1.0.4
+Specification*, section 4, Tables 2 and 6)::
 
     PHYPayload = MHDR (1) | MACPayload | MIC (4)
     MACPayload = FHDR | FPort (1) | FRMPayload
@@ -37,6 +38,7 @@ from dataclasses import dataclass
 from numbers import Integral
 
 from ..errors import SDTError, UnknownNameError, shown
+from .sourced import DataModel, read_data
 
 __all__ = [
     "FHDR_BYTES",
@@ -51,10 +53,44 @@ __all__ = [
     "region",
 ]
 
-MHDR_BYTES = 1
-FHDR_BYTES = 7  # DevAddr 4 + FCtrl 1 + FCnt 2, FOpts empty
-FPORT_BYTES = 1
-MIC_BYTES = 4
+
+class _Frame(DataModel):
+    source: str
+    mhdr_bytes: int
+    fhdr_bytes: int
+    fport_bytes: int
+    mic_bytes: int
+
+
+class _Window(DataModel):
+    symbols: int
+    source: str
+
+
+class _Region(DataModel):
+    name: str
+    duty_cycle: float | None = None
+    preamble_symbols: int
+    dwell_time_s: float | None = None
+    data_rates: tuple[tuple[int, float, int, int], ...]
+    source: str
+    rx2_sf: int
+    rx2_bandwidth_hz: float
+    rx2_source: str
+
+
+class _LorawanFile(DataModel):
+    frame: _Frame
+    receive_window: _Window
+    region: tuple[_Region, ...]
+
+
+#: lorawan.toml, every table with its source
+DATA = read_data("lorawan.toml", _LorawanFile)
+MHDR_BYTES = DATA.frame.mhdr_bytes
+FHDR_BYTES = DATA.frame.fhdr_bytes  # DevAddr 4 + FCtrl 1 + FCnt 2, FOpts empty
+FPORT_BYTES = DATA.frame.fport_bytes
+MIC_BYTES = DATA.frame.mic_bytes
 #: LoRaWAN bytes around the application payload of an uplink without FOpts
 OVERHEAD_BYTES = MHDR_BYTES + FHDR_BYTES + FPORT_BYTES + MIC_BYTES
 #: MACPayload bytes that are not application payload (FHDR + FPort): N = M - 8
@@ -140,45 +176,16 @@ class Region:
     source: str
 
 
-_RP = "LoRaWAN Regional Parameters v1.0.3revA (LoRa Alliance, 2018)"
+def _plan(entry: _Region) -> Region:
+    """A regional plan of lorawan.toml; the dwell time holds on its 125 kHz channels."""
+    rates = tuple(
+        DataRate(i, sf, bw, m, m_nr, entry.dwell_time_s if bw == 125e3 else None)
+        for i, (sf, bw, m, m_nr) in enumerate(entry.data_rates)
+    )
+    return Region(entry.name, rates, entry.duty_cycle, entry.preamble_symbols, entry.source)
 
-REGIONS: dict[str, Region] = {
-    "EU868": Region(
-        "EU868",
-        tuple(
-            DataRate(i, sf, bw, m, m_nr)
-            for i, (sf, bw, m, m_nr) in enumerate(
-                [
-                    (12, 125e3, 59, 59),
-                    (11, 125e3, 59, 59),
-                    (10, 125e3, 59, 59),
-                    (9, 125e3, 123, 123),
-                    (8, 125e3, 230, 250),
-                    (7, 125e3, 230, 250),
-                    (7, 250e3, 230, 250),
-                ]
-            )
-        ),
-        duty_cycle=0.01,
-        preamble_symbols=8,
-        source=f"{_RP} section 2.2, Tables 2-3; EU863-870 maximum payload size tables "
-        "(TTN regional-parameters page, RP002-1.0.2)",
-    ),
-    "US915": Region(
-        "US915",
-        (
-            DataRate(0, 10, 125e3, 19, 19, 0.4),
-            DataRate(1, 9, 125e3, 61, 61, 0.4),
-            DataRate(2, 8, 125e3, 133, 133, 0.4),
-            DataRate(3, 7, 125e3, 230, 250, 0.4),
-            DataRate(4, 8, 500e3, 230, 250),
-        ),
-        duty_cycle=None,
-        preamble_symbols=8,
-        source=f"{_RP} section 2.3, Table 16 and the repeater-compatible table; "
-        "400 ms dwell time on 125 kHz channels (FCC part 15)",
-    ),
-}
+
+REGIONS: dict[str, Region] = {entry.name: _plan(entry) for entry in DATA.region}
 
 
 def region(name: str) -> Region:

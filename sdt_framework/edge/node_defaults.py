@@ -2,8 +2,8 @@
 
 The currents, the clock and the reference FFT are read from ``node.toml``
 beside this module (every figure with its document, table and printed words);
-the LoRaWAN receive-window constants below are protocol facts with their
-sources here. Every default is a setting of :class:`~.node.NodeSettings`; a
+the LoRaWAN receive-window figures below from ``lorawan.toml`` (protocol facts,
+each with its source). Every default is a setting of :class:`~.node.NodeSettings`; a
 user with measured figures for their own node passes them instead
 (``sdt budget --help``).
 
@@ -27,6 +27,7 @@ after each of them.
 
 from __future__ import annotations
 
+from .lorawan import DATA as LORAWAN
 from .sourced import DataModel, Figure, read_data
 
 __all__ = [
@@ -91,9 +92,9 @@ FFT_REFERENCE = (
     FIGURES.fft_clock.value * 1e6,
 )
 #: symbols a receive window stays open without a downlink (LoRaWAN preamble length)
-RX_SYMBOLS = 8
-#: RX2 spreading factor and bandwidth per region
-RX2_MODULATION = {"EU868": (12, 125e3), "US915": (12, 500e3)}
+RX_SYMBOLS = LORAWAN.receive_window.symbols
+#: RX2 spreading factor and bandwidth per region (lorawan.toml, with their sources)
+RX2_MODULATION = {r.name: (r.rx2_sf, r.rx2_bandwidth_hz) for r in LORAWAN.region}
 #: what the node model leaves out, said with every life it gives
 NOT_COUNTED = (
     "the life is an estimate from typical datasheet figures at room temperature; not counted: "

@@ -24,20 +24,24 @@ __all__ = ["point_zone_agreement", "with_zone_agreement", "zone_assignments"]
 
 
 def zone_assignments(plan: Plan, where: str, every: bool = True) -> dict[str, Assignment]:
-    """The zone table of each machine ``plan`` uses (the config's ``zones``, else the default).
+    """The zone table of each machine ``plan`` uses (the config's ``zones``, else the one
+    its machine spec names: ``plan.machines``).
 
     A bad ``zones`` entry is one line naming ``where``; with ``every``, so is
     a machine without a table (the target cannot be judged there).
     """
     machines = sorted({r.machine for r in plan.recordings})
     zones_where = f"{where}: [benchmark] zones"
-    assignments = assign_tables(machines, configured=plan.config.zones, where=zones_where)
+    assignments = assign_tables(
+        machines, configured=plan.config.zones, where=zones_where, specs=plan.machines
+    )
     missing = [m for m in machines if m not in assignments]
     if every and missing:
         raise SDTError(
             f"{where}: target.zone_agreement needs a zone table for machine(s) "
             f"{', '.join(missing)}; name one in [benchmark] zones, e.g. zones = "
-            f'{{ "{missing[0]}" = "iso10816-3-group2-rigid" }} (docs/severity.md)'
+            f'{{ "{missing[0]}" = "iso10816-3-group2-rigid" }}, or as zone_table in its '
+            f"machine spec (docs/severity.md)"
         )
     return assignments
 

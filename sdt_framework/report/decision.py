@@ -68,7 +68,7 @@ def _current(registry: Any, name: str) -> str:
     return f"{supply.measure_ua.value:g} uA"
 
 
-def _zones(folder: ResultsFolder) -> dict[str, str]:
+def _zones(folder: ResultsFolder, registry: Any) -> dict[str, str]:
     """Per sensor: its share of windows in the reference's ISO zone, per machine.
 
     The "Severity and alarms" section's figure (:func:`.severity.folder_agreement`,
@@ -77,7 +77,7 @@ def _zones(folder: ResultsFolder) -> dict[str, str]:
     Empty when it cannot be computed (that section says why).
     """
     try:
-        zones = folder_agreement(folder).zones
+        zones = folder_agreement(folder, registry).zones
     except SDTError:
         return {}
     pooled = zones["channel"] == "all"
@@ -102,7 +102,7 @@ def decision_blocks(folder: ResultsFolder, registry: Any, margin: float = 0.02) 
     except SDTError as exc:
         return [*blocks, Paragraph(f"Not shown: {literal(exc)}")]
     losses = _losses(folder, margin)
-    zones = _zones(folder)
+    zones = _zones(folder, registry)
     rows = tuple(
         (
             literal(name),

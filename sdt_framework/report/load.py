@@ -53,6 +53,8 @@ class ResultsFolder:
     comparisons: dict[float, Any] = field(default_factory=dict, repr=False)
     #: the severity package's zone agreement (or the SDTError saying why none), computed once
     agreement: Any = field(default=None, repr=False)
+    #: the machines of the benchmark's dataset and config (:mod:`.machines`), read once
+    machines: Any = field(default=None, repr=False)
 
     @property
     def ok(self) -> pd.DataFrame:

@@ -25,9 +25,11 @@ from ..severity import (
     vrms_bands,
     zone_agreement,
 )
+from ..specs import MachineSpec
 from .document import Block, Heading, Paragraph, Table, literal
 from .figures_severity import spectral_blocks
 from .load import ResultsFolder
+from .machines import folder_machines
 from .severity_tables import alarm_table, condition_table
 
 __all__ = ["agreement_rows", "folder_agreement", "severity_blocks"]
@@ -94,8 +96,8 @@ def _tables_used(agreement: Agreement) -> list[Block]:
         blocks.append(
             Paragraph(
                 f"No zone table for {', '.join(map(literal, agreement.unassigned))}: left out "
-                f"(`zones = {{ MACHINE = 'TABLE' }}` under `[benchmark]` in the config, or "
-                f"`sdt compare --zones MACHINE=TABLE`, grades it)."
+                f"(a `zone_table` in its machine spec, `zones = {{ MACHINE = 'TABLE' }}` under "
+                f"`[benchmark]` in the config, or `sdt compare --zones MACHINE=TABLE`, grades it)."
             )
         )
     return blocks
@@ -128,11 +130,12 @@ def folder_agreement(folder: ResultsFolder, registry: Any = None) -> Agreement:
     its recording bootstrap is the costly part, so the result (or the
     :class:`SDTError` saying why there is none) is kept on the folder. With a
     ``registry``, the band each sensor's V_RMS covers is checked against its
-    chain (added to a kept result that was computed without one).
+    chain (added to a kept result that was computed without one). The machines' own
+    zone tables come from the folder's machines (:func:`.machines.folder_machines`).
     """
     if folder.agreement is None:
         try:
-            folder.agreement = _agreement(folder)
+            folder.agreement = _agreement(folder, folder_machines(folder, registry).specs)
         except SDTError as exc:
             folder.agreement = exc
     if isinstance(folder.agreement, SDTError):
@@ -144,7 +147,7 @@ def folder_agreement(folder: ResultsFolder, registry: Any = None) -> Agreement:
     return folder.agreement
 
 
-def _agreement(folder: ResultsFolder) -> Agreement:
+def _agreement(folder: ResultsFolder, machines: dict[str, MachineSpec]) -> Agreement:
     features = folder.features
     if features is None or features.empty or "V_RMS" not in features.columns:
         raise SDTError("features.parquet with V_RMS is missing.")
@@ -154,6 +157,7 @@ def _agreement(folder: ResultsFolder) -> Agreement:
         configured=config.zones if config is not None else None,
         where=f"{folder.path / 'config.toml'}: [benchmark] zones",
         window_s=config.window_s if config is not None else None,
+        specs=machines,
     )
     seed = config.seed if config is not None else 0
     return zone_agreement(features, folder.reference, assignments, seed=seed)

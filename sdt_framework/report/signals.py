@@ -18,13 +18,14 @@ from numpy.typing import NDArray
 from ..bench.config import BenchmarkConfig
 from ..chain import degrade
 from ..data.open import load_dataset, open_dataset
-from ..data.recording import Recording
+from ..data.recording import Dataset, Recording
 from ..specs import SensorSpec
 from ..validation import NoiseCheck, noise_check
 
 __all__ = [
     "BandNoise",
     "SensorTrace",
+    "config_dataset",
     "degrade_all",
     "noise_checks",
     "open_config_dataset",
@@ -47,13 +48,19 @@ class SensorTrace:
         return bool(np.max(np.abs(self.signal)) >= self.full_scale_g - self.lsb_g)
 
 
-def open_config_dataset(config: BenchmarkConfig, registry: Any) -> list[Recording]:
-    """The recordings the benchmark used (same dataset, options, machines, channels)."""
+def config_dataset(config: BenchmarkConfig, registry: Any) -> Dataset:
+    """The benchmark's dataset, opened again (metadata only) with the same options."""
     options = dict(config.dataset_options)
     if config.dataset:
-        dataset = load_dataset(registry, registry.dataset(config.dataset), config.data, **options)
-    else:
-        dataset = open_dataset(registry, config.data or "synthetic-pump", **options)
+        return load_dataset(registry, registry.dataset(config.dataset), config.data, **options)
+    return open_dataset(registry, config.data or "synthetic-pump", **options)
+
+
+def open_config_dataset(
+    config: BenchmarkConfig, registry: Any, dataset: Dataset | None = None
+) -> list[Recording]:
+    """The recordings the benchmark used (same dataset, options, machines, channels)."""
+    dataset = dataset if dataset is not None else config_dataset(config, registry)
     recordings = dataset.recordings()
     if config.machines:
         recordings = [r for r in recordings if r.machine in config.machines]

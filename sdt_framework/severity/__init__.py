@@ -11,8 +11,9 @@ ZoneTable, load_zone_file, resolve_table, builtin_tables, grade, band_problem
     Zone tables as TOML data (ISO 10816-3 groups 1/2 rigid/flexible, ISO 20816-1
     typical ranges, or a plant's own; 10-1000 Hz, or 2-1000 Hz below 600 r/min),
     validated; ``band_problem`` says why windows cannot be graded by a table.
-assign_tables, DEFAULT_TABLES, PUMP_PROXY, Assignment
-    Which table grades which machine, and why (the pump end's proxy named).
+assign_tables, spec_tables, Assignment
+    Which table grades which machine, and why: the machine's spec (MachineSpec,
+    the dataset's or the user's), the config's ``zones``, ``--zones``.
 zone_agreement(features, reference, assignments, bandwidths=) -> Agreement
     Zone agreement, zone confusion, dangerous (better-zone) share, criterion II
     alarm agreement on each sensor's own baseline (and on the reference's, beside)
@@ -23,9 +24,9 @@ window_agreement(features, reference, assignments) -> DataFrame
     intervals (the objective ``sdt explore`` checks per design point).
 RULE, CriterionII, alarm_thresholds, alarm_bits
     The criterion II rules (``criterion2.toml``, with clauses) and their thresholds.
-defect_frequencies, defect_lines, BEARINGS ; envelope_spectrum, velocity_spectrum, asd
-    Bearing defect lines (``defect_lines``: a ball fault at 2 x BSF) and the spectra
-    the field reads, with their scaling (the
+defect_frequencies, defect_lines ; envelope_spectrum, velocity_spectrum, asd
+    Bearing defect lines of a BearingSpec (``defect_lines``: a ball fault at 2 x BSF) and
+    the spectra the field reads, with their scaling (the
     velocity spectrum's ``overall`` computed with the window's ENBW).
 estimate_running_speed -> SpeedEstimate ; running_speed
     The shaft speed off the spectrum, away from mains lines, with its confidence.
@@ -35,9 +36,9 @@ from __future__ import annotations
 
 from .agreement import Agreement, paired_zones, window_agreement, zone_agreement
 from .alarms import ALARM_FRACTION, HEADROOM, RULE, CriterionII, alarm_bits, alarm_thresholds
-from .assign import DEFAULT_TABLES, PUMP_PROXY, assign_tables
+from .assign import assign_tables, spec_tables
 from .bands import band_label, sensor_bandwidths, vrms_bands
-from .bearings import BEARINGS, defect_frequencies, defect_lines, defect_orders
+from .bearings import defect_frequencies, defect_lines, defect_orders
 from .conditions import condition_zones
 from .spectra import (
     LOW_EDGE_LINES,
@@ -65,14 +66,11 @@ from .tables import (
 
 __all__ = [
     "ALARM_FRACTION",
-    "BEARINGS",
-    "DEFAULT_TABLES",
     "HEADROOM",
     "ISO_BANDS_HZ",
     "LOW_EDGE_LINES",
     "MACHINE_GROUPS",
     "MAINS_HZ",
-    "PUMP_PROXY",
     "RULE",
     "V_RMS_BAND_HZ",
     "ZONES",
@@ -103,6 +101,7 @@ __all__ = [
     "resolve_table",
     "running_speed",
     "sensor_bandwidths",
+    "spec_tables",
     "velocity_spectrum",
     "vrms_bands",
     "window_agreement",

@@ -1,9 +1,12 @@
-"""Which zone table grades which machine: the defaults for the pump datasets, a config, --zones.
+"""Which zone table grades which machine: the machine's spec, a config, --zones.
 
-The defaults name, beside the table, why it was chosen; the pump end of both
-default machines is graded by the motor's table as a proxy (:data:`PUMP_PROXY`).
+A machine's spec (:class:`~sdt_framework.specs.MachineSpec`: the dataset's
+machines, a ``machines.toml`` beside a manifest, the config's
+``machine_specs``) names its table and why (the pump rig's file names the pump
+end's proxy); the config's ``[benchmark] zones`` and ``--zones`` override it.
 A table whose band is not the windows' V_RMS band (a 2-1000 Hz table) is
-refused here, before any run, with the reason (:func:`.tables.band_problem`).
+refused here, before any run, with the reason (:func:`.tables.band_problem`),
+as is a table name that does not resolve.
 """
 
 from __future__ import annotations
@@ -11,29 +14,10 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 from ..errors import SDTError
-from .tables import Assignment, ZoneTable, band_problem, builtin_tables, resolve_table
+from ..specs import MachineSpec
+from .tables import Assignment, ZoneTable, band_problem, resolve_table
 
-__all__ = ["DEFAULT_TABLES", "PUMP_PROXY", "Assignment", "assign_tables"]
-
-#: why the pump end (ch4, ch5) of the default machines is graded by the motor's table
-PUMP_PROXY = (
-    "the pump end (ch4, ch5) is graded by the same table as a proxy: rotodynamic pumps are "
-    "the subject of ISO 10816-7, whose boundaries no source read here gives"
-)
-
-#: which table grades which machine of the two pump datasets, and why
-DEFAULT_TABLES: dict[str, tuple[str, str]] = {
-    "Motor-2": (
-        "iso20816-1-typical-low",
-        "11 kW 4-pole set: below ISO 10816-3's 15 kW, so ISO 20816-1's typical ranges at "
-        f"their low end, where Table C.1 puts motors up to 15 kW; {PUMP_PROXY}",
-    ),
-    "Motor-4": (
-        "iso10816-3-group2-rigid",
-        "22 kW 2-pole set: ISO 10816-3 group 2 (15-300 kW); rigid, the stricter support "
-        f"class, as no source gives the rig's support natural frequency; {PUMP_PROXY}",
-    ),
-}
+__all__ = ["Assignment", "assign_tables", "spec_tables"]
 
 
 def _gradable(table: ZoneTable, where: str, window_s: float | None) -> ZoneTable:
@@ -43,23 +27,45 @@ def _gradable(table: ZoneTable, where: str, window_s: float | None) -> ZoneTable
     return table
 
 
+def spec_tables(
+    specs: Mapping[str, MachineSpec], window_s: float | None = None
+) -> dict[str, Assignment]:
+    """The table each machine's spec names, and why; a name that does not resolve, or a
+    table that cannot grade the windows, is one line naming the spec's file and field."""
+    out = {}
+    for name, spec in specs.items():
+        if spec.zone_table is None:
+            continue
+        where = f"{spec.origin or 'machine spec'}: machine {name!r} field 'zone_table'"
+        try:
+            table = resolve_table(spec.zone_table)
+        except SDTError as exc:
+            raise SDTError(f"{where}: {exc}") from None
+        reason = spec.zone_why or f"named by the machine's spec ({spec.origin})"
+        out[name] = Assignment(name, _gradable(table, where, window_s), reason)
+    return out
+
+
 def assign_tables(
     machines: list[str],
     choices: list[str] = (),
     configured: Mapping[str, str] | None = None,
     where: str = "[benchmark] zones",
     window_s: float | None = None,
+    specs: Mapping[str, MachineSpec] | None = None,
 ) -> dict[str, Assignment]:
     """The table for each machine: ``choices`` ("TABLE" or "MACHINE=TABLE", ``--zones``),
-    else ``configured`` (the benchmark config's ``zones``, MACHINE -> TABLE), else the default.
+    else ``configured`` (the benchmark config's ``zones``, MACHINE -> TABLE), else the one
+    its spec in ``specs`` names (:func:`spec_tables`).
 
-    A machine with none of them (a user's dataset) gets no table and is left
-    out of the severity figures; the caller says so. A configured machine that
-    is not in ``machines``, a table that does not resolve or one that cannot
-    grade the windows' V_RMS (its band) is one line naming ``where`` (the
-    config file) and the field; ``window_s`` (the windows' length) goes into
-    that line.
+    A machine with none of them (a user's dataset without a machine spec) gets
+    no table and is left out of the severity figures; the caller says so. A
+    configured machine that is not in ``machines``, a table that does not
+    resolve or one that cannot grade the windows' V_RMS (its band) is one line
+    naming ``where`` (the config file) and the field, or the spec's file;
+    ``window_s`` (the windows' length) goes into that line.
     """
+    from_specs = spec_tables(specs or {}, window_s)
     chosen: dict[str, tuple[str, str]] = {}
     for machine, table in (configured or {}).items():
         if machine not in machines:
@@ -88,7 +94,6 @@ def assign_tables(
         if machine in chosen:
             table, reason = chosen[machine]
             out[machine] = Assignment(machine, resolve_table(table), reason)
-        elif machine in DEFAULT_TABLES:
-            name, reason = DEFAULT_TABLES[machine]
-            out[machine] = Assignment(machine, builtin_tables()[name], reason)
+        elif machine in from_specs:
+            out[machine] = from_specs[machine]
     return out

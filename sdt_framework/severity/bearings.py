@@ -1,44 +1,32 @@
 """Bearing defect frequencies from geometry: BPFO, BPFI, BSF, FTF as orders of shaft speed.
 
-The pump's bearings are named by the NLN-EMP metadata (docs/data.md, [M]):
-motor 6309 (faults seeded at its non-drive end) and pump 6308. Their internal
-geometry (8 balls of 17.46 / 15.08 mm on a 72.5 / 65.0 mm pitch circle, the
-pitch taken as the mean of bore and outside diameter) is the one the synthetic
-pump is built with (:mod:`sdt_framework.data.synth_model`), so the lines drawn
-are the ones the generator's impacts follow; docs/severity.md says how far that
-geometry is sourced (an approximation: no manufacturer's internal dimensions
-were found). Formulas for a deep-groove ball bearing, contact angle 0:
-BPFO = n/2 (1 - d/D), BPFI = n/2 (1 + d/D), BSF = D/(2d) (1 - (d/D)^2),
-FTF = 1/2 (1 - d/D).
+A bearing is a :class:`~sdt_framework.specs.BearingSpec` of the machine the
+recordings come from: the dataset's machines (the pump rig's 6309 and 6308,
+with their sources, in the pump datasets' ``pump_rig.toml``), a
+``machines.toml`` beside a manifest or the benchmark config's
+``machine_specs``. The formulas (deep-groove ball bearing, contact angle a):
+BPFO = n/2 (1 - d/D cos a), BPFI = n/2 (1 + d/D cos a),
+BSF = D/(2d) (1 - (d/D cos a)^2), FTF = 1/2 (1 - d/D cos a), are the spec's own.
 """
 
 from __future__ import annotations
 
-from ..data.synth_model import MOTOR_BEARING, PUMP_BEARING, Bearing
+from ..specs import BearingSpec
 
-__all__ = ["BEARINGS", "defect_frequencies", "defect_lines", "defect_orders"]
-
-#: the bearings of the NLN-EMP / synthetic pump, by designation
-BEARINGS: dict[str, Bearing] = {MOTOR_BEARING.name: MOTOR_BEARING, PUMP_BEARING.name: PUMP_BEARING}
+__all__ = ["defect_frequencies", "defect_lines", "defect_orders"]
 
 
-def defect_orders(bearing: Bearing) -> dict[str, float]:
+def defect_orders(bearing: BearingSpec) -> dict[str, float]:
     """BPFO, BPFI, BSF and FTF of ``bearing`` as multiples of the shaft speed."""
-    ratio = bearing.ball_mm / bearing.pitch_mm
-    return {
-        "BPFO": bearing.balls / 2 * (1 - ratio),
-        "BPFI": bearing.balls / 2 * (1 + ratio),
-        "BSF": bearing.pitch_mm / (2 * bearing.ball_mm) * (1 - ratio**2),
-        "FTF": 0.5 * (1 - ratio),
-    }
+    return {"BPFO": bearing.bpfo, "BPFI": bearing.bpfi, "BSF": bearing.bsf, "FTF": bearing.ftf}
 
 
-def defect_frequencies(bearing: Bearing, shaft_hz: float) -> dict[str, float]:
+def defect_frequencies(bearing: BearingSpec, shaft_hz: float) -> dict[str, float]:
     """The four defect frequencies in Hz at shaft speed ``shaft_hz``."""
     return {name: order * shaft_hz for name, order in defect_orders(bearing).items()}
 
 
-def defect_lines(bearing: Bearing, shaft_hz: float) -> dict[str, float]:
+def defect_lines(bearing: BearingSpec, shaft_hz: float) -> dict[str, float]:
     """The lines an envelope spectrum shows a fault of each part at, in Hz: BPFO, BPFI,
     2×BSF and FTF.
 

@@ -6,8 +6,9 @@ a plugin is an error rather than a silently ignored setting. Each spec carries
 from the content hash) and a ``source`` reference (datasheet, paper, URL).
 
 One module per kind: :mod:`.base` (:class:`Spec`), :mod:`.sensor`,
-:mod:`.features`, :mod:`.classifier`, :mod:`.dataset`, :mod:`.reader`, and :mod:`.stage_use`
-(a profile's extra stages and tolerances, as data). This package re-exports
+:mod:`.features`, :mod:`.classifier`, :mod:`.dataset`, :mod:`.reader`, :mod:`.stage_use`
+(a profile's extra stages and tolerances, as data) and :mod:`.machine` (a machine a
+dataset's recordings come from: speed, bearings, zone table). This package re-exports
 them, so ``from sdt_framework.specs import SensorSpec`` is the import to use.
 """
 
@@ -19,6 +20,7 @@ from .classifier import ClassifierSpec
 from .dataset import DatasetSpec
 from .features import DTYPE_BYTES as DTYPE_BYTES
 from .features import FeatureBand, FeatureSetSpec
+from .machine import BearingSpec, MachineSpec
 from .reader import ReaderSpec
 from .sensor import AXIS_FIELDS as AXIS_FIELDS
 from .sensor import MODE_SUFFIX as MODE_SUFFIX
@@ -29,10 +31,12 @@ from .sensor import SensorSpec
 from .stage_use import StageUse, Tolerance
 
 __all__ = [
+    "BearingSpec",
     "ClassifierSpec",
     "DatasetSpec",
     "FeatureBand",
     "FeatureSetSpec",
+    "MachineSpec",
     "ReaderSpec",
     "SensorSpec",
     "Spec",

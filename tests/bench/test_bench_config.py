@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import pytest
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 from sdt_framework import SDTError
 from sdt_framework.bench.config import load_config
 from sdt_framework.bench.results import tidy
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
-from sdt_framework.data import open_synthetic, write_nln_emp
+from sdt_framework.data import write_nln_emp
 
 
 def test_quick_on_the_synthetic_pump_shortens_acquisitions():

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import pytest
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 from sdt_framework import SDTError
 from sdt_framework.bench.scenarios import Run, check_allocation, load_allocation, rule_allocation
-from sdt_framework.data import open_synthetic
 
 
 @pytest.fixture(scope="module")

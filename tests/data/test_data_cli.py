@@ -8,8 +8,8 @@ import sys
 from pathlib import Path
 
 import numpy as np
-
-from sdt_framework.data import open_nln_emp, open_synthetic
+from sdt_plugins.datasets.nln_emp import open_nln_emp
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 CLASSES = {
     "Motor-4": {

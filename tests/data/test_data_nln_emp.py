@@ -7,8 +7,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from sdt_plugins.datasets.nln_emp import csv_file as nln_emp_csv
+from sdt_plugins.datasets.nln_emp import open_nln_emp, parse_condition
 
-from sdt_framework.data import nln_emp_csv, open_nln_emp, parse_condition
 from sdt_framework.errors import SDTError
 
 STEP = 5e-05
@@ -106,7 +107,7 @@ def test_cache_hit_and_invalidation(tree: Path, tmp_path: Path, monkeypatch) -> 
         calls.append(Path(path).name)
         return real(path, *args, **kwargs)
 
-    monkeypatch.setattr("sdt_framework.data.nln_emp.parse_nln_csv", counting)
+    monkeypatch.setattr("sdt_plugins.datasets.nln_emp.reader.parse_nln_csv", counting)
     cache = tmp_path / "cache"
     rec = open_nln_emp(tree, channels="ch1", cache_dir=cache).recordings()[0]
     first = rec.load()

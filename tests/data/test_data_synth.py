@@ -14,12 +14,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 from scipy import signal
+from sdt_plugins.datasets.synthetic_pump import dataset as synth_dataset
+from sdt_plugins.datasets.synthetic_pump import faults as faults
+from sdt_plugins.datasets.synthetic_pump import model as model
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
+from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 
 from sdt_framework.api import degrade
-from sdt_framework.data import open_synthetic, synth_dataset
-from sdt_framework.data import synth_faults as faults
-from sdt_framework.data import synth_model as model
-from sdt_framework.data.synth import generate_run
 from sdt_framework.errors import SDTError
 from sdt_framework.registry import build_registry
 
@@ -207,11 +208,12 @@ def test_recordings_name_the_generator_so_old_cached_features_are_not_reused() -
         b"".join(
             (here / n).read_bytes()
             for n in (
-                "synth.py",
-                "synth_model.py",
-                "synth_faults.py",
-                "synth_mix.py",
-                "synth_marks.toml",
+                "generate.py",
+                "model.py",
+                "faults.py",
+                "mix.py",
+                "marks.toml",
+                "../pump_rig.toml",  # the rig's speeds and bearings the generator reads
             )
         )
     ).hexdigest()[:12]

@@ -10,9 +10,8 @@ degrees apart on one housing do.
 from __future__ import annotations
 
 import numpy as np
-
-from sdt_framework.data import open_synthetic
-from sdt_framework.data import synth_model as m
+from sdt_plugins.datasets.synthetic_pump import model as m
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 
 def _signals(**options) -> dict[str, np.ndarray]:

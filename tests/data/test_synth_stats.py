@@ -20,9 +20,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
-from sdt_framework.data import synth_model as model
-from sdt_framework.data.synth import generate_run
+from sdt_plugins.datasets.synthetic_pump import model as model
+from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 
 HERE = Path(__file__).parent
 STATS = HERE / "nln_emp_stats"
@@ -85,7 +84,7 @@ def test_the_default_generates_every_real_run_and_no_other() -> None:
 def test_every_mark_is_its_real_row_or_the_mean_of_its_class_where_the_row_is_a_glitch() -> None:
     rows = real_rows()
     marks = tomllib.loads(
-        (Path(model.__file__).with_name("synth_marks.toml")).read_text(encoding="utf-8")
+        (Path(model.__file__).with_name("marks.toml")).read_text(encoding="utf-8")
     )
     for machine, runs in marks.items():
         for run, channels in runs.items():

@@ -71,3 +71,20 @@ def test_largest_eu868_uplink_fits_the_sx127x_packet_engine():
 def test_unknown_region_lists_the_known_ones():
     with pytest.raises(UnknownNameError, match="EU868, US915"):
         region("AS923")
+
+
+def test_the_protocol_figures_are_data_with_their_sources():
+    """lorawan.toml holds the frame, the regional plans and the receive windows, each sourced;
+    the node's RX2 rates are LoRaMac-node's EU868 DR_0 (SF12/125 kHz) and US915 DR_8
+    (SF12/500 kHz), its receive window the 8-symbol preamble."""
+    from sdt_framework.edge import node_defaults
+    from sdt_framework.edge.lorawan import DATA
+
+    assert "TS001-1.0.4" in DATA.frame.source
+    assert {r.name: "Regional Parameters v1.0.3revA" in r.source for r in DATA.region} == {
+        "EU868": True,
+        "US915": True,
+    }
+    assert all("LoRaMac-node" in r.rx2_source for r in DATA.region)
+    assert node_defaults.RX2_MODULATION == {"EU868": (12, 125e3), "US915": (12, 500e3)}
+    assert node_defaults.RX_SYMBOLS == region("EU868").preamble_symbols == 8

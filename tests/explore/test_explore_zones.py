@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from sdt_plugins.datasets.pump_rig import rig_machines
 from typer.testing import CliRunner
 
 from sdt_framework.cli.main import app
@@ -61,12 +62,12 @@ def _features(gains: dict[str, float]) -> pd.DataFrame:
 def test_the_table_used_is_the_one_the_test_counts_with() -> None:
     table = builtin_tables()["iso10816-3-group2-rigid"]
     assert tuple(table.cuts) == CUTS
-    assert assign_tables(["Motor-4"])["Motor-4"].table.name == table.name
+    assert assign_tables(["Motor-4"], specs=rig_machines())["Motor-4"].table.name == table.name
 
 
 def test_identical_point_agrees_everywhere_and_a_scaled_one_as_counted_by_hand() -> None:
     features = _features({"same": 1.0, "scaled": 1.5})
-    shares = point_zone_agreement(features, "ref", assign_tables(["Motor-4"]))
+    shares = point_zone_agreement(features, "ref", assign_tables(["Motor-4"], specs=rig_machines()))
     got = shares.set_index("point")["zone_agreement"]
     assert got["same"] == 1.0
     # by hand: 0.5 -> 0.75 (A, A) and 6.0 -> 9.0 (D, D) stay; the other six cross up

@@ -10,8 +10,8 @@ import numpy as np
 import pandas as pd
 import pytest
 import pyuff
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
-from sdt_framework.data import open_synthetic
 from sdt_framework.data.open import round_significant
 
 DATA = Path(__file__).parents[1] / "data" / "readers"

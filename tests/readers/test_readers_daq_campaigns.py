@@ -20,8 +20,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
-from sdt_framework.data import open_synthetic
 from sdt_framework.signals.files import read_signal
 
 from .daq_files import PSD, Channel, catman_uff, lvm_text

@@ -10,9 +10,9 @@ import numpy as np
 import pandas as pd
 import pytest
 from scipy.signal import resample_poly
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 from sdt_framework.chain import compile_chain, degrade
-from sdt_framework.data import open_synthetic
 from sdt_framework.data.open import round_significant
 
 

@@ -11,8 +11,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import soundfile
-
-from sdt_framework.data import open_synthetic
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 ARGS = ("--quick", "--sensors", "adxl345", "--classifiers", "lr", "--jobs", "1", "--no-report")
 TEMPLATE = "{machine}/{speed}/{condition}/{severity}/{run}/{channel}"

@@ -22,8 +22,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
-from sdt_framework.data import open_synthetic, write_nln_emp
+from sdt_framework.data import write_nln_emp
 
 ARGS = ("--quick", "--sensors", "adxl345", "--classifiers", "lr", "--channels", "ch1")
 

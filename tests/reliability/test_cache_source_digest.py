@@ -15,8 +15,9 @@ import shutil
 from pathlib import Path
 
 import pandas as pd
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
-from sdt_framework.data import open_synthetic, write_nln_emp
+from sdt_framework.data import write_nln_emp
 
 ARGS = ["--quick", "--sensors", "wilcoxon-786b10", "--classifiers", "lr", "--no-report"]
 

@@ -14,9 +14,9 @@ import csv
 import os
 
 import pandas as pd
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 from sdt_framework.csv_cells import unescape_frame
-from sdt_framework.data import open_synthetic
 
 MACHINE = "@pump"
 

@@ -90,7 +90,7 @@ def test_degrade_of_a_system_file(
 
 
 def test_nln_emp_header_is_not_quoted_whole(tmp_path: Path, secret: Path) -> None:
-    from sdt_framework.data import open_nln_emp
+    from sdt_plugins.datasets.nln_emp import open_nln_emp
 
     folder = tmp_path / "Vibration" / "Motor-4" / "70" / "healthy 1"
     folder.mkdir(parents=True)

@@ -16,8 +16,7 @@ import textwrap
 
 import pandas as pd
 import pytest
-
-from sdt_framework.data.synth_dataset import GENERATOR
+from sdt_plugins.datasets.synthetic_pump.dataset import GENERATOR
 
 from ..helpers import EXPLORE_BENCHMARK
 

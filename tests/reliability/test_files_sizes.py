@@ -14,9 +14,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
+from sdt_plugins.datasets.synthetic_pump.generate import FS_HZ, generate_run
 
-from sdt_framework.data import open_synthetic, write_nln_emp
-from sdt_framework.data.synth import FS_HZ, generate_run
+from sdt_framework.data import write_nln_emp
 from sdt_framework.registry import build_registry
 from sdt_framework.validation import noise_check
 

@@ -29,8 +29,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 from markdown_it import MarkdownIt
-
-from sdt_framework.data import open_synthetic
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 from ..helpers import MANIFEST_HEADER
 

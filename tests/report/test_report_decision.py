@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import pandas as pd
+from sdt_plugins.datasets.pump_rig import rig_machines
 
 from sdt_framework.edge.cells import cell
 from sdt_framework.edge.node import NodeSettings, node_budget
@@ -74,7 +75,7 @@ def test_decision_zone_agreement_is_the_severity_sections_figure(results_dir, re
     pooled = [r for r in severity.rows if r[1] == "all"]  # machine, channel, sensor, table, same
     assert [r[2] for r in pooled] == ["adxl345"]
     assert decision == {"adxl345": f"Motor-2 {pooled[0][4]}"}
-    cuts = assign_tables(["Motor-2"])["Motor-2"].table.cuts
+    cuts = assign_tables(["Motor-2"], specs=rig_machines())["Motor-2"].table.cuts
     features = pd.read_parquet(results_dir / "features.parquet")
     if "repeat" in features:
         features = features[features["repeat"] == 0]

@@ -10,14 +10,15 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from scipy import signal
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
+from sdt_plugins.datasets.synthetic_pump.model import CHANNELS, MOTOR_BEARING
 
 from sdt_framework.chain import degrade
-from sdt_framework.data import open_synthetic
-from sdt_framework.data.synth_model import CHANNELS, Bearing
-from sdt_framework.report.figures_severity import envelope_figure, envelope_notes
+from sdt_framework.report.figures_envelope import envelope_figure, envelope_notes
 from sdt_framework.report.signals import degrade_all
 from sdt_framework.report.style import save_figure
 from sdt_framework.severity import defect_lines
+from sdt_framework.specs import BearingSpec
 
 from .conftest import assert_real_png
 
@@ -30,7 +31,10 @@ def test_ball_defect_line_is_twice_bsf_as_the_cwru_table_gives_it() -> None:
     # the table's own BPFI + BPFO = n and BPFI - BPFO = n d/D give the geometry
     balls = round(CWRU["BPFI"] + CWRU["BPFO"])
     ratio = (CWRU["BPFI"] - CWRU["BPFO"]) / balls
-    lines = defect_lines(Bearing("6205", balls, ratio * 100, 100.0), 1.0)
+    bearing = BearingSpec(
+        name="6205", balls=balls, ball_mm=ratio * 100, pitch_mm=100.0, channel="DE", faults=()
+    )
+    lines = defect_lines(bearing, 1.0)
     assert set(lines) == {"BPFO", "BPFI", "2×BSF", "FTF"}
     assert lines["2×BSF"] == pytest.approx(CWRU["ball"], abs=2e-4)
     for name in ("BPFO", "BPFI", "FTF"):
@@ -110,7 +114,7 @@ def test_envelope_says_the_paper_adxl357_shows_aliased_content(outer_race, tmp_p
     assert folded in caption and "this envelope shows aliased content" in caption
     assert f"attenuated by {-decimating.source.gain_db:.0f} dB (decimate" in caption
 
-    lines = defect_lines(Bearing("6309", 8, 17.46, 72.5), 24.65)
+    lines = defect_lines(MOTOR_BEARING, 24.65)  # the 6309: 8 balls of 17.46 mm on 72.5 mm
     fig, _ = envelope_figure(traces, bands, lines, "outer race", content)
     panel_text = {ax.get_title(loc="left").split(":")[0]: ax.texts for ax in fig.axes}
     (note,) = panel_text["adxl357"]

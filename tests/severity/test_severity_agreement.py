@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 import pytest
+from sdt_plugins.datasets.pump_rig import rig_machines
 
 from sdt_framework.severity import assign_tables, zone_agreement
 
@@ -61,7 +62,9 @@ def features(tmp_path: Path) -> pd.DataFrame:
 
 
 def _agreement(features: pd.DataFrame):
-    return zone_agreement(features, "ref", assign_tables(["Motor-4"]), n_boot=500)
+    return zone_agreement(
+        features, "ref", assign_tables(["Motor-4"], specs=rig_machines()), n_boot=500
+    )
 
 
 def test_a_sensor_identical_to_the_reference_agrees_on_every_window(features) -> None:
@@ -148,8 +151,11 @@ def test_the_report_section_shows_the_table_used_and_the_agreement(features, tmp
     results = pd.DataFrame(
         columns=["machine", "scenario", "sensor", "classifier", "macro_f1", "status"]
     )
+    from sdt_framework.report.machines import FolderMachines
+
     folder = ResultsFolder(tmp_path, results, features=features)
     folder.summary = {"reference": "ref"}
+    folder.machines = FolderMachines(rig_machines())  # the pump rig's, as its datasets give
     blocks = severity_blocks(folder, None, tmp_path / "figures", {})
     tables = [b for b in blocks if isinstance(b, Table)]
     used = tables[0].rows[0]

@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
+from sdt_plugins.datasets.pump_rig import rig_machines
 
 from sdt_framework.severity import assign_tables, zone_agreement
 
@@ -58,7 +59,9 @@ def _bits(values: np.ndarray, baseline: float) -> np.ndarray:
 
 @pytest.fixture(scope="module")
 def row() -> pd.Series:
-    result = zone_agreement(_features(), "ref", assign_tables(["Motor-4"]), n_boot=200)
+    result = zone_agreement(
+        _features(), "ref", assign_tables(["Motor-4"], specs=rig_machines()), n_boot=200
+    )
     alarms = result.alarms
     return alarms[(alarms["sensor"] == "plus10") & (alarms["channel"] == "ch1")].iloc[0]
 

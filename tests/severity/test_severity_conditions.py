@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
+from sdt_plugins.datasets.pump_rig import rig_machines
 
 from sdt_framework.severity import assign_tables, condition_zones, paired_zones, zone_agreement
 
@@ -73,7 +74,7 @@ def _expected(features: pd.DataFrame, sensor: str, condition: str, level) -> tup
 
 
 def test_the_zone_per_condition_is_the_worst_channels_median(features) -> None:
-    assignments = assign_tables(["Motor-4"])
+    assignments = assign_tables(["Motor-4"], specs=rig_machines())
     table = condition_zones(paired_zones(features, "ref", assignments), "ref", assignments)
     machine = table[table["channel"] == "all"]
     assert len(machine) == 3 * 2  # three condition-levels, two sensors
@@ -93,7 +94,9 @@ def test_the_zone_per_condition_is_the_worst_channels_median(features) -> None:
 
 
 def test_the_agreement_carries_the_table_and_the_noisy_sensor_grades_worse(features) -> None:
-    agreement = zone_agreement(features, "ref", assign_tables(["Motor-4"]), n_boot=100)
+    agreement = zone_agreement(
+        features, "ref", assign_tables(["Motor-4"], specs=rig_machines()), n_boot=100
+    )
     machine = agreement.conditions[agreement.conditions["channel"] == "all"]
     healthy = machine[machine["condition"] == "healthy"].set_index("sensor")["zone"]
     ref_zone = _expected(features, "ref", "healthy", None)[2]

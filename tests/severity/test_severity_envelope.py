@@ -21,10 +21,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from scipy import signal
+from sdt_plugins.datasets.synthetic_pump import model as model
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 from sdt_framework.api import degrade
-from sdt_framework.data import open_synthetic
-from sdt_framework.data import synth_model as model
 from sdt_framework.severity import (
     chain_bandwidth,
     envelope_band,

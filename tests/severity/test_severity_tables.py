@@ -6,6 +6,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from sdt_plugins.datasets.pump_rig import rig_machines
 
 from sdt_framework.errors import SpecFileError
 from sdt_framework.severity import builtin_tables, grade, load_zone_file, resolve_table
@@ -90,7 +91,7 @@ def test_the_pump_end_is_named_a_proxy_and_no_unsourced_20816_3_claim_is_made() 
     # gives; the shipped tables do not claim ISO 20816-3:2022 carries the same boundaries
     from sdt_framework.severity import assign_tables
 
-    for machine, assignment in assign_tables(["Motor-2", "Motor-4"]).items():
+    for machine, assignment in assign_tables(["Motor-2", "Motor-4"], specs=rig_machines()).items():
         assert "the pump end (ch4, ch5) is graded by the same table as a proxy" in (
             assignment.reason
         ), machine
@@ -100,12 +101,14 @@ def test_the_pump_end_is_named_a_proxy_and_no_unsourced_20816_3_claim_is_made() 
 
 
 def test_a_ball_fault_is_drawn_at_twice_the_ball_spin_frequency() -> None:
-    from sdt_framework.severity import BEARINGS, defect_lines
+    from sdt_framework.severity import defect_lines
 
-    # 6309 as the generator builds it: 8 balls of 17.46 mm on a 72.5 mm pitch circle
+    # 6309 as the rig's file gives it: 8 balls of 17.46 mm on a 72.5 mm pitch circle
     ratio, shaft = 17.46 / 72.5, 1480 / 60
     bsf = 72.5 / (2 * 17.46) * (1 - ratio**2) * shaft
-    lines = defect_lines(BEARINGS["6309"], shaft)
+    (motor_bearing, _) = rig_machines()["Motor-2"].bearings
+    assert motor_bearing.name == "6309"
+    lines = defect_lines(motor_bearing, shaft)
     assert list(lines) == ["BPFO", "BPFI", "2×BSF", "FTF"]
     assert lines["2×BSF"] == pytest.approx(2 * bsf)
     assert lines["BPFO"] == pytest.approx(4 * (1 - ratio) * shaft)

@@ -1,10 +1,10 @@
 """Each channel's level and impulsiveness, set from the real archive's per-channel statistics.
 
-The physical sources of ``synth.py`` decide *what* a channel carries (shaft
+The physical sources of ``generate.py`` decide *what* a channel carries (shaft
 lines and their phases, a bearing's impacts at its defect rate, cavitation
 bursts at vane passes, the throttled valve's hiss, flow noise ringing the
 casing modes); the real archive decides *how much* of each. The real figures
-(``synth_marks.toml``: RMS, Pearson kurtosis and crest factor of the first 12 s
+(``marks.toml``: RMS, Pearson kurtosis and crest factor of the first 12 s
 of every real record, per run and channel) fix three numbers per channel; a
 column is mixed from independent zero-mean parts so that it reproduces them:
 
@@ -61,7 +61,7 @@ KNOCK_BACKGROUND = 0.8
 
 @cache
 def _table() -> dict:
-    with Path(__file__).with_name("synth_marks.toml").open("rb") as handle:
+    with Path(__file__).with_name("marks.toml").open("rb") as handle:
         return tomllib.load(handle)
 
 

@@ -5,9 +5,9 @@ the same in kind across its severities: a line at 1x or 2x running speed, an
 axial share, an impact train at a bearing's defect rate ringing the casing
 resonances, a broadband kHz hump with bursts. Each constant below says what
 it models, why (the physics, textbook diagnostics), and which figure of the
-real archive it is calibrated on (the letters are ``synth_model``'s sources
+real archive it is calibrated on (the letters are ``model``'s sources
 [A], [B], [M], [P]) or "no source" when only the physics fixes it. The
-generator (``synth.py``) places each signature on the source group where the
+generator (``generate.py``) places each signature on the source group where the
 fault acts (motor or pump, radial or axial, motor or pump bearing, coupling,
 impeller eye, discharge); the channels see it through their transfer paths.
 
@@ -37,7 +37,7 @@ and prognostics implemented on a centrifugal pump", 2011):
 
 from __future__ import annotations
 
-from .synth_model import MOTOR_BEARING, PUMP_BEARING, VANES, Bearing
+from .model import MOTOR_BEARING, PUMP_BEARING, VANES, Bearing
 
 __all__ = [
     "CAVITATION",

@@ -1,8 +1,8 @@
 """Physical constants of the synthetic pump test rig: machines, bearings, paths, scatter.
 
-The fault signatures are in ``synth_faults.py``.
+The fault signatures are in ``faults.py``.
 
-Everything the generator (``synth.py``) assumes is here, with its reason, so
+Everything the generator (``generate.py``) assumes is here, with its reason, so
 that the documentation and the tests can compute the expected frequencies
 independently of the generator. The levels are calibrated against published
 statistics of the real NLN-EMP archive (docs/data.md, "Calibration";
@@ -28,6 +28,10 @@ says so ("no source").
 from __future__ import annotations
 
 from dataclasses import dataclass
+
+from sdt_framework.specs import BearingSpec
+
+from ..pump_rig import rig_machines
 
 __all__ = [
     "CHANNELS",
@@ -55,30 +59,11 @@ FULL_SCALE_G = 50.0
 VANES = 6  # no source for either pump's vane count: kept
 
 
-@dataclass(frozen=True)
-class Bearing:
-    """Rolling-element bearing geometry; defect frequencies as multiples of shaft speed."""
-
-    name: str
-    balls: int
-    ball_mm: float
-    pitch_mm: float
-
-    @property
-    def bpfo(self) -> float:
-        """Ball pass frequency, outer race, per shaft revolution."""
-        return self.balls / 2 * (1 - self.ball_mm / self.pitch_mm)
-
-    @property
-    def bpfi(self) -> float:
-        """Ball pass frequency, inner race, per shaft revolution."""
-        return self.balls / 2 * (1 + self.ball_mm / self.pitch_mm)
-
-
-# designations [M]; internal geometry from a public bearing table (8 balls; pitch =
-# mean of bore and outside diameter, 45/100 and 40/90 mm), see docs/data.md
-MOTOR_BEARING = Bearing("6309", 8, 17.46, 72.5)
-PUMP_BEARING = Bearing("6308", 8, 15.08, 65.0)
+#: the rig's machines (``../pump_rig.toml``, each figure with its source [M], [P]): the
+#: running speeds and the bearings whose defect rates the impacts follow
+RIG = rig_machines()
+Bearing = BearingSpec
+MOTOR_BEARING, PUMP_BEARING = RIG["Motor-2"].bearings  # 6309 at the motor, 6308 at the pump
 
 
 @dataclass(frozen=True)
@@ -97,11 +82,15 @@ class Machine:
         return self.rpm / 60.0
 
 
+def _speed(name: str) -> tuple[str, float]:
+    """The speed folder ("70") and running speed, rpm, of ``name`` in the rig's file."""
+    return f"{RIG[name].speed_percent:g}", RIG[name].shaft_rpm
+
+
 MACHINES: dict[str, Machine] = {
     "Motor-4": Machine(
         "Motor-4",
-        "70",
-        2075.0,  # [M]: 2-pole motor at 70 %
+        *_speed("Motor-4"),  # [M]: 2-pole motor at 70 %, 2075 rpm
         (
             ("healthy", 3),
             ("unbalance motor", 6),
@@ -118,8 +107,7 @@ MACHINES: dict[str, Machine] = {
     ),
     "Motor-2": Machine(
         "Motor-2",
-        "100",
-        1480.0,  # [P]: 4-pole motor at 100 %
+        *_speed("Motor-2"),  # [P]: 4-pole motor at 100 %, 1480 rpm
         (
             ("healthy", 3),
             ("impeller", 3),

@@ -15,9 +15,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..signals.csv_rule import read_csv_signal
-from ..signals.errors import DataFileError
-from ..signals.tokens import quote
+from sdt_framework.signals.csv_rule import read_csv_signal
+from sdt_framework.signals.errors import DataFileError
+from sdt_framework.signals.tokens import quote
 
 __all__ = ["CsvHeader", "parse_nln_csv", "read_header"]
 

@@ -20,10 +20,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import SDTError
-from . import synth_model as m
-from .recording import Dataset, Recording, measurement_groups
-from .synth import FS_HZ, generate_run
+from sdt_framework.data import Dataset, Recording
+from sdt_framework.data.recording import measurement_groups
+from sdt_framework.errors import SDTError
+
+from . import model as m
+from .generate import FS_HZ, generate_run
 
 __all__ = ["DEFAULTS", "GENERATOR", "SyntheticPump", "open_synthetic"]
 
@@ -31,10 +33,11 @@ DEFAULTS = {"seed": 0, "acquisitions": 1, "duration": 12.0}
 #: ``layout = "real"``: the real archive's columns per run (12 s each, five per 60 s
 #: acquisition): healthy 60, a fault 15 (the data article: 10-20, 2-4 acquisitions)
 REAL_LAYOUT = {"healthy": m.REAL_COLUMNS["healthy"], "fault": 15}
-#: fingerprint of the generator: the model, the fault signatures and the code that draws
-MODULES = ("synth.py", "synth_model.py", "synth_faults.py", "synth_mix.py", "synth_marks.toml")
+#: fingerprint of the generator: the model, the fault signatures, the code that draws and
+#: the rig's speeds and bearings it reads
+MODULES = ("generate.py", "model.py", "faults.py", "mix.py", "marks.toml", "../pump_rig.toml")
 GENERATOR = hashlib.sha256(
-    b"".join(Path(__file__).with_name(n).read_bytes() for n in MODULES)
+    b"".join(Path(__file__).parent.joinpath(n).read_bytes() for n in MODULES)
 ).hexdigest()[:12]
 
 
@@ -104,7 +107,9 @@ class SyntheticPump(Dataset):
                                 reader=partial(self._generate, name, condition, level, ch),
                             )
                         )
-        super().__init__("synthetic-pump", recordings, [])
+        super().__init__(
+            "synthetic-pump", recordings, [], machines={name: m.RIG[name] for name in machines}
+        )
 
     def _generate(self, machine: str, condition: str, level: int, channel: str) -> np.ndarray:
         key = (machine, f"{condition} {level}")
@@ -153,7 +158,7 @@ def open_synthetic(
         Subsets (default both machines, ch1-ch5, every class).
     triaxial
         Add ch6, so that ch6, ch2 and ch3 form a triaxial node on the motor drive-end
-        bearing housing (x, y, z: ``synth_model.NODE_AXES``); off by default, the
+        bearing housing (x, y, z: ``model.NODE_AXES``); off by default, the
         paper's five channels. The other channels' signals do not change with it.
     layout
         ``"compact"`` (default): ``acquisitions`` columns per run; ``"real"``: the real

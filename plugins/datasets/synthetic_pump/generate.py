@@ -3,11 +3,11 @@
 One run (a condition directory) is generated at once for all its channels:
 the rig's sources (shaft harmonics, vane pass, impacts, flow noise,
 cavitation) are drawn once per acquisition and every channel sees them through
-its own transfer path (``synth_model.CHANNELS``), so channels are simultaneous
-views of the same event; the fault signatures come from ``synth_faults``. Each run is
+its own transfer path (``model.CHANNELS``), so channels are simultaneous
+views of the same event; the fault signatures come from ``faults``. Each run is
 also an installation at an operating point: the flow noise and vane pass scale
 with the operating point, shared by every channel (and by the classes of one
-session, ``synth_faults.SESSIONS``), and each channel's response to the healthy
+session, ``faults.SESSIONS``), and each channel's response to the healthy
 machine and to flow noise with its mounting, drawn per healthy run, or per fault
 class (shared by its levels), calibrated to the real archive's spread
 (docs/data.md). All draws come from ``seeding.rng(seed, machine, run, class or
@@ -25,10 +25,11 @@ from functools import cache
 import numpy as np
 from scipy import signal
 
-from ..seeding import rng
-from . import synth_faults as f
-from . import synth_mix as mix
-from . import synth_model as m
+from sdt_framework.seeding import rng
+
+from . import faults as f
+from . import mix
+from . import model as m
 
 __all__ = ["FS_HZ", "generate_run"]
 
@@ -190,7 +191,7 @@ def _sources(
 
 
 def _channel(src: dict, path: m.ChannelPath, noise: np.ndarray, fs: float, install: tuple):
-    """One sensor's view of the sources, as the parts ``synth_mix.mix_column`` weighs.
+    """One sensor's view of the sources, as the parts ``mix.mix_column`` weighs.
 
     ``low``: the shaft-synchronous lines through the complex gains; ``fault``: impacts
     ringing the casing resonances and the cavitation bursts; ``broadband``: flow noise
@@ -241,7 +242,7 @@ def generate_run(
     seed
         Base seed; every draw derives from (seed, machine, run, ...).
     glitches
-        Add the real archive's common-mode glitches (``synth_mix.add_glitch``).
+        Add the real archive's common-mode glitches (``mix.add_glitch``).
     """
     spec = m.MACHINES[machine]
     run = f"{condition} {level}"

@@ -22,10 +22,13 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import SDTError
-from .cache import ArrayCache
-from .nln_emp_csv import parse_nln_csv, read_header
-from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
+from sdt_framework.data import ArrayCache, DataFileError, Dataset, Recording, Skipped
+from sdt_framework.data.recording import measurement_groups
+from sdt_framework.errors import SDTError
+from sdt_framework.specs import MachineSpec
+
+from ..pump_rig import rig_machines
+from .csv_file import parse_nln_csv, read_header
 
 __all__ = ["PAPER_SUBSETS", "NlnEmpDataset", "open_nln_emp", "parse_condition"]
 
@@ -154,10 +157,35 @@ def open_nln_emp(
                     recordings,
                     skipped,
                 )
-    dataset = NlnEmpDataset(name, recordings, skipped)
+    machines, notes = _machines(recordings)
+    dataset = NlnEmpDataset(name, recordings, skipped, notes, machines)
     if validate:
         dataset.validate()
     return dataset
+
+
+def _machines(recordings: list[Recording]) -> tuple[dict[str, MachineSpec], list[str]]:
+    """The rig's machines read at the speed their spec is for, and a note for each other.
+
+    A spec holds one operating point (Motor-2 at 100 %): its shaft speed and
+    bearing lines do not hold at another speed folder, so a machine read at
+    another speed gets no spec, and the note says what to give instead.
+    """
+    rig = rig_machines()
+    machines, notes = {}, []
+    for name in sorted({r.machine for r in recordings} & set(rig)):
+        spec = rig[name]
+        speeds = sorted({r.speed or "" for r in recordings if r.machine == name})
+        if speeds == [f"{spec.speed_percent:g}"]:
+            machines[name] = spec
+            continue
+        notes.append(
+            f"{name}: the rig's machine spec is for {spec.speed_percent:g} % speed "
+            f"({spec.shaft_rpm:g} rpm), the recordings are at {', '.join(speeds)} %: no machine "
+            f"spec (no defect lines, no default zone table); give one in the config's "
+            f"[benchmark.machine_specs.{name}] (docs/severity.md)"
+        )
+    return machines, notes
 
 
 def _scan_condition(
