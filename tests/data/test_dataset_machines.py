@@ -48,12 +48,12 @@ def test_nln_emp_at_another_speed_gets_no_spec_and_a_note(tmp_path) -> None:
     assert "[benchmark.machine_specs.Motor-2]" in note
 
 
-def test_a_manifests_machines_toml_is_read_and_listed(sdt_main, tmp_path) -> None:
+def test_a_manifests_machines_toml_is_read_and_listed(sdt_main, tmp_path, readers) -> None:
     manifest = six_recordings(tmp_path)
     (tmp_path / "machines.toml").write_text(
         "[machine.m]\nshaft_rpm = 1500\n[machine.M]\nshaft_rpm = 900\n", encoding="utf-8"
     )
-    dataset = open_manifest(manifest)
+    dataset = open_manifest(manifest, readers=readers)
     assert dataset.machines["m"].shaft_rpm == 1500.0
     assert dataset.machines["m"].origin == str(tmp_path / "machines.toml")
     (note,) = dataset.notes
@@ -65,5 +65,5 @@ def test_a_manifests_machines_toml_is_read_and_listed(sdt_main, tmp_path) -> Non
     assert sorted(listed) == ["M", "m"] and listed["m"]["shaft_rpm"] == 1500.0
 
 
-def test_a_manifest_without_machines_toml_describes_none(tmp_path) -> None:
-    assert open_manifest(six_recordings(tmp_path)).machines == {}
+def test_a_manifest_without_machines_toml_describes_none(tmp_path, readers) -> None:
+    assert open_manifest(six_recordings(tmp_path), readers=readers).machines == {}

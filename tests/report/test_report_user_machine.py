@@ -79,7 +79,7 @@ def _manifest(folder: Path, machine: str = "pump-A") -> Path:
 def _results_folder(tmp_path: Path, manifest: Path) -> ResultsFolder:
     """The folder a benchmark of ``manifest`` by the reference chain leaves, as the report
     reads it: its config, and features whose V_RMS picks the worst recording."""
-    dataset = open_manifest(manifest)
+    dataset = open_manifest(manifest, readers=build_registry().signal_readers())
     rows = [
         {"machine": r.machine, "sensor": "wilcoxon-786b10", "recording_id": r.recording_id,
          "V_RMS": float(1 + (r.severity or 0))}
@@ -102,7 +102,13 @@ def registry():
 def test_a_users_bearing_gets_an_envelope_figure_with_its_lines(tmp_path, registry) -> None:
     manifest = _manifest(tmp_path)
     (tmp_path / "machines.toml").write_text(MACHINES_TOML)
-    assert open_manifest(manifest).machines["pump-A"].bearings[0].name == "6205"
+    assert (
+        open_manifest(manifest, readers=registry.signal_readers())
+        .machines["pump-A"]
+        .bearings[0]
+        .name
+        == "6205"
+    )
     folder = _results_folder(tmp_path, manifest)
     blocks = spectral_blocks(folder, registry, tmp_path / "figures", COLORS)
     envelopes = [b for b in blocks if isinstance(b, Figure) and "envelope" in b.path.name]
