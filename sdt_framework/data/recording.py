@@ -74,6 +74,13 @@ class Recording:
         Measurement group of each acquisition (60 s = five 12 s acquisitions).
     source
         File path, or ``"synthetic"``.
+    speed_rpm, speed_percent, speed_source
+        The operating (shaft) speed the recording was taken at, in rpm, and in %
+        of the machine's rated speed where that is known (variable speed, issue
+        43); ``speed_source`` says where the figure comes from (e.g. "the
+        archive's speed folder", "manifest speed_rpm", "estimated from the
+        spectrum, confidence high"), empty when no speed is known. ``speed`` is
+        the dataset's own label of the operating point (an NLN-EMP speed folder).
     """
 
     dataset: str
@@ -91,6 +98,9 @@ class Recording:
     measurement: tuple[int, ...]
     source: str
     reader: Callable[[], np.ndarray] = field(repr=False, compare=False, hash=False)
+    speed_rpm: float | None = None
+    speed_percent: float | None = None
+    speed_source: str = ""
 
     def load(self) -> np.ndarray:
         """Read the signal: float64 array (n_acquisitions, samples_per_acquisition) in g.
@@ -127,6 +137,9 @@ class Recording:
             "samples_per_acquisition": self.samples_per_acquisition,
             "measurement": list(self.measurement),
             "source": self.source,
+            "speed_rpm": self.speed_rpm,
+            "speed_percent": self.speed_percent,
+            "speed_source": self.speed_source,
         }
 
 
