@@ -20,7 +20,7 @@ from .classifier import ClassifierSpec
 from .dataset import DatasetSpec
 from .features import DTYPE_BYTES as DTYPE_BYTES
 from .features import FeatureBand, FeatureSetSpec
-from .machine import BearingSpec, MachineSpec
+from .machine import BearingSpec, MachineSpec, OperatingPoint
 from .reader import ReaderSpec
 from .sensor import AXIS_FIELDS as AXIS_FIELDS
 from .sensor import MODE_SUFFIX as MODE_SUFFIX
@@ -37,6 +37,7 @@ __all__ = [
     "FeatureBand",
     "FeatureSetSpec",
     "MachineSpec",
+    "OperatingPoint",
     "ReaderSpec",
     "SensorSpec",
     "Spec",

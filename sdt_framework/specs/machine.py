@@ -28,7 +28,7 @@ from typing import Annotated, Any
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, field_validator, model_validator
 
-__all__ = ["BearingSpec", "MachineSpec"]
+__all__ = ["BearingSpec", "MachineSpec", "OperatingPoint"]
 
 
 def _number(value: Any) -> Any:
@@ -110,6 +110,14 @@ class BearingSpec(_Model):
         return 0.5 * (1 - self._ratio)
 
 
+class OperatingPoint(_Model):
+    """One speed a machine was run at: % of rated and the shaft speed read there, with source."""
+
+    percent: Number = Field(gt=0, le=200, description="Operating point, % of rated speed.")
+    shaft_rpm: Number = Field(gt=0, description="Shaft speed at that point, rpm.")
+    source: str = Field(default="", description="Where the shaft speed comes from.")
+
+
 class MachineSpec(_Model):
     """A machine: speed, motor, bearings and the zone table that grades it (module docstring)."""
 
@@ -123,6 +131,10 @@ class MachineSpec(_Model):
     poles: Count | None = Field(default=None, ge=2, description="Motor poles (2, 4, ...).")
     power_kw: Number | None = Field(default=None, gt=0, description="Rated power, kW.")
     bearings: tuple[BearingSpec, ...] = Field(default=(), description="Its rolling bearings.")
+    operating_points: tuple[OperatingPoint, ...] = Field(
+        default=(),
+        description="Other speeds it was run at (variable speed): % of rated and shaft rpm.",
+    )
     zone_table: str | None = Field(
         default=None,
         min_length=1,
@@ -156,6 +168,25 @@ class MachineSpec(_Model):
     def shaft_hz(self) -> float:
         """Nominal running speed, Hz."""
         return self.shaft_rpm / 60.0
+
+    def speed_at(self, percent: float) -> OperatingPoint | None:
+        """The shaft speed at ``percent`` of rated speed: the listed point (or this spec's own
+        ``speed_percent``); else, where ``rated_rpm`` is known, the rated speed scaled by the
+        percentage, its source saying so (a drive's percentage need not scale the slip); else
+        None."""
+        for point in self.operating_points:
+            if math.isclose(point.percent, percent):
+                return point
+        if self.speed_percent is not None and math.isclose(self.speed_percent, percent):
+            return OperatingPoint(percent=percent, shaft_rpm=self.shaft_rpm, source=self.source)
+        if self.rated_rpm is None:
+            return None
+        return OperatingPoint(
+            percent=percent,
+            shaft_rpm=self.rated_rpm * percent / 100.0,
+            source=f"rated speed {self.rated_rpm:g} rpm x {percent:g} %: no source gives the "
+            "speed at this point, so the slip is taken to scale with it",
+        )
 
     def bearing_for(self, condition: str) -> BearingSpec | None:
         """The bearing whose fault ``condition`` is, or None."""

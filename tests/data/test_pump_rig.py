@@ -50,3 +50,20 @@ def test_the_defect_frequencies_are_those_docs_data_md_states() -> None:
     assert motor.bpfi * shaft == pytest.approx(122.4, abs=0.05)
     assert pump.bpfo == pytest.approx(3.072, abs=5e-4)
     assert pump.bpfo * shaft == pytest.approx(75.8, abs=0.05)
+
+
+def test_speed_at_a_point_no_source_gives_is_the_rated_speed_scaled_and_says_so():
+    from sdt_framework.specs import MachineSpec, OperatingPoint
+
+    spec = MachineSpec(
+        name="m",
+        shaft_rpm=1480.0,
+        speed_percent=100.0,
+        rated_rpm=1480.0,
+        operating_points=(OperatingPoint(percent=75.0, shaft_rpm=1101.0, source="log"),),
+    )
+    assert spec.speed_at(100).shaft_rpm == 1480.0  # its own point
+    assert (spec.speed_at(75).shaft_rpm, spec.speed_at(75).source) == (1101.0, "log")
+    scaled = spec.speed_at(50)
+    assert scaled.shaft_rpm == 740.0 and "no source gives the speed" in scaled.source
+    assert MachineSpec(name="n", shaft_rpm=2075.0, speed_percent=70.0).speed_at(50) is None
