@@ -29,6 +29,7 @@ ALLOWED: dict[str, set[str]] = {
     "hookspecs": set(),
     "labels": set(),
     "lazy": set(),
+    "speed": set(),  # the running speed off a spectrum: numpy and scipy only
     "csv_cells": set(),
     "inputs": {"errors"},
     "io": {"errors"},
@@ -77,7 +78,7 @@ ALLOWED: dict[str, set[str]] = {
         "toml_files",
     },
     "verdict": {"bench", "errors", "seeding"},
-    "severity": {"errors", "seeding", "specs", "toml_files", "verdict"},
+    "severity": {"errors", "seeding", "specs", "speed", "toml_files", "verdict"},
     "explore": _BASE
     | _IO
     | {
