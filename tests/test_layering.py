@@ -54,7 +54,7 @@ ALLOWED: dict[str, set[str]] = {
     },
     "signals": {"dtypes", "errors", "inputs", "lazy"},
     # seeding left with the generator, now the synthetic-pump plugin's package
-    "data": _IO | {"dtypes", "lazy", "machine_files", "signals", "specs"},
+    "data": _IO | {"dtypes", "lazy", "machine_files", "signals", "specs", "speed"},
     "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
     "features": {"arguments", "csv_cells", "errors", "io", "specs"},
     "edge": {"errors", "specs", "toml_files"},
