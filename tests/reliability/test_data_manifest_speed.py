@@ -90,7 +90,7 @@ def test_rows_of_one_recording_at_two_speeds_are_left_out_naming_both(folder, re
         ("['']", "'' is not a speed; give a number (50) or a label ('50')"),
         ("[]", "must name at least one entry"),
         ("[50, 50]", "lists a name twice"),
-        ("nan", "speeds"),
+        ("nan", "should be a valid list"),
     ],
 )
 def test_a_config_speed_that_is_no_speed_is_refused(tmp_path, speeds, says) -> None:
@@ -100,3 +100,31 @@ def test_a_config_speed_that_is_no_speed_is_refused(tmp_path, speeds, says) -> N
         load_config(config, {})
     assert "speeds" in str(error.value) and says in str(error.value)
     assert "\n" not in str(error.value)
+
+
+@pytest.mark.parametrize(
+    ("args", "says"),
+    [
+        (["--nominal-rpm", "0"], "error: --nominal-rpm 0: give the shaft speed in rpm, above 0"),
+        (
+            ["--nominal-rpm", "nan"],
+            "error: --nominal-rpm nan: give the shaft speed in rpm, above 0",
+        ),
+        (["--nominal-rpm", "-5"], "error: --nominal-rpm -5: give the shaft speed in rpm, above 0"),
+        (
+            ["--speeds", "50"],
+            "error: --speeds: {m} has no speed folders to choose from (its dataset takes no "
+            "speeds option); drop --speeds: its recordings show their speed",
+        ),
+        (
+            ["--speeds", "50,,75"],
+            "error: --speeds '50,,75': an empty name; give 'all' or e.g. 50,75,100",
+        ),
+    ],
+)
+def test_inspect_options_that_are_no_speed_are_one_line(folder: Path, sdt, args, says) -> None:
+    manifest = folder / "m.csv"
+    manifest.write_text(HEADER + "a.npy,1000,healthy,,r1,ch1,\n", encoding="utf-8")
+    result = sdt("dataset", "inspect", str(manifest), *args)
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.splitlines() == [says.format(m=manifest)]
