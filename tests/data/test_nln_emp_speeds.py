@@ -141,3 +141,16 @@ def test_dataset_inspect_shows_the_speed_as_text_and_json(archive, sdt_main):
     assert "[M] 740 rpm at 50 % ('Speed (RPM) +- 5')" in shown[0]  # rich markup left alone
     assert shown[2].startswith("speed Motor-4 50: no rpm, 50 % of rated (2 recordings): the ")
     assert lines[-1].startswith("nln-emp: 10 recordings in 5 runs (Motor-2, Motor-4)")
+
+
+def test_an_archive_read_at_several_speeds_is_written_back_in_its_layout(archive, tmp_path):
+    from sdt_framework.data import write_nln_emp
+
+    read = open_nln_emp(archive, speeds="all", cache=False)
+    written = write_nln_emp(read, tmp_path / "copy")
+    relative = sorted(str(p.relative_to(tmp_path / "copy")) for p in written)
+    assert relative == sorted(
+        str(p.relative_to(archive)) for p in (archive / "Vibration").rglob("*.csv")
+    )
+    again = open_nln_emp(tmp_path / "copy", speeds="all", cache=False)
+    assert sorted(again.runs()) == sorted(read.runs())
