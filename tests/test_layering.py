@@ -29,6 +29,7 @@ ALLOWED: dict[str, set[str]] = {
     "hookspecs": set(),
     "labels": set(),
     "lazy": set(),
+    "speed": set(),  # the running speed off a spectrum: numpy and scipy only
     "csv_cells": set(),
     "inputs": {"errors"},
     "io": {"errors"},
@@ -53,7 +54,7 @@ ALLOWED: dict[str, set[str]] = {
     },
     "signals": {"dtypes", "errors", "inputs", "lazy"},
     # seeding left with the generator, now the synthetic-pump plugin's package
-    "data": _IO | {"dtypes", "lazy", "machine_files", "signals", "specs"},
+    "data": _IO | {"dtypes", "lazy", "machine_files", "signals", "specs", "speed"},
     "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
     "features": {"arguments", "csv_cells", "errors", "io", "specs"},
     "edge": {"errors", "specs", "toml_files"},
@@ -77,7 +78,7 @@ ALLOWED: dict[str, set[str]] = {
         "toml_files",
     },
     "verdict": {"bench", "errors", "seeding"},
-    "severity": {"errors", "seeding", "specs", "toml_files", "verdict"},
+    "severity": {"errors", "seeding", "specs", "speed", "toml_files", "verdict"},
     "explore": _BASE
     | _IO
     | {

@@ -54,6 +54,13 @@ class BenchmarkConfig(BaseModel):
         default_factory=dict, description="Options passed to the dataset loader."
     )
     machines: list[str] | None = Field(default=None, description="Machines to use (all).")
+    speeds: list[float | str] | None = Field(
+        default=None,
+        description="Operating speeds to use, e.g. [50, 100]: the recordings whose "
+        "speed_percent or speed label is one of them, also handed to a dataset that takes "
+        "`speeds` (NLN-EMP reads those speed folders). Default: every recording the dataset "
+        "gives (for NLN-EMP the paper's speeds).",
+    )
     channels: list[str] | None = Field(default=None, description="Channels to use (all).")
     sensors: list[str] | None = Field(
         default=None,
@@ -130,13 +137,24 @@ class BenchmarkConfig(BaseModel):
     cache_dir: str | None = Field(default=None, description="Feature cache folder.")
     report: bool = Field(default=True, description="Write the report at the end.")
 
-    @field_validator("sensors", "classifiers", "machines", "channels", "scenarios")
+    @field_validator("sensors", "classifiers", "machines", "channels", "scenarios", "speeds")
     @classmethod
-    def _not_empty(cls, value: list[str] | None) -> list[str] | None:
+    def _not_empty(cls, value: list[Any] | None) -> list[Any] | None:
         if value is not None and not value:
             raise ValueError("must name at least one entry (or be left out for all)")
         if value is not None and len(set(value)) != len(value):
             raise ValueError(f"lists a name twice: {value}")
+        return value
+
+    @field_validator("speeds", mode="before")
+    @classmethod
+    def _speeds(cls, value: Any) -> Any:
+        for item in value if isinstance(value, list) else ():
+            if isinstance(item, bool) or (isinstance(item, str) and not item.strip()):
+                shown = str(item).lower() if isinstance(item, bool) else repr(item)
+                raise ValueError(f"{shown} is not a speed; give a number (50) or a label ('50')")
+            if isinstance(item, int | float) and not item > 0:
+                raise ValueError(f"{item!r} is not a speed; give a positive number (% of rated)")
         return value
 
     @field_validator("zones")

@@ -24,6 +24,7 @@ import pandas as pd
 
 from ..data.open import load_dataset, open_dataset
 from ..data.recording import Dataset, Recording
+from ..data.speed import select_speeds
 from ..errors import SDTError
 from ..features import resolve_feature_set
 from ..registry import Registry
@@ -107,10 +108,13 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
             if first
             else ""
         )
-        raise SDTError(f"dataset {dataset.name!r} has no usable recordings{why}")
+        notes = f" ({'; '.join(dataset.notes)})" if dataset.notes else ""
+        raise SDTError(f"dataset {dataset.name!r} has no usable recordings{why}{notes}")
     machines = _select(config.machines, {r.machine for r in recordings}, "machine(s)")
     channels = _select(config.channels, {r.channel for r in recordings}, "channel(s)")
     recordings = [r for r in recordings if r.machine in machines and r.channel in channels]
+    if config.speeds is not None:
+        recordings = select_speeds(recordings, config.speeds)
     rates = {r.sampling_rate_hz for r in recordings}
     if sensors is None:
         sensors = _resolve_sensors(default_sensor_names(rates), registry)
@@ -165,8 +169,9 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
         resolve_nodes(config.axes, config.nodes, recordings) if config.sample == "node" else []
     )
     data = None if config.data is None else os.path.abspath(config.data)  # one spelling
+    speeds = [] if config.speeds is None else [config.speeds]  # unset: the keys stay
     key_source = json.dumps(
-        [dataset.name, data, config.dataset_options], sort_keys=True, default=str
+        [dataset.name, data, config.dataset_options, *speeds], sort_keys=True, default=str
     )
     return Plan(
         config,
@@ -240,16 +245,21 @@ def _data_path(data: str | None, registry: Registry) -> str | None:
 
 
 def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
-    """Open the configured dataset; an option its loader does not take is a user error."""
+    """Open the configured dataset; an option its loader does not take is a user error.
+
+    The config's ``speeds`` reach a loader that takes a ``speeds`` option (NLN-EMP reads
+    those speed folders) unless ``dataset_options`` sets its own; a loader without one
+    is opened as it is, and the speeds select among its recordings.
+    """
     options = dict(config.dataset_options)
-    data = _data_path(config.data, registry)
     try:
-        if config.dataset:
-            spec = registry.dataset(config.dataset)
-            if spec.requires_path and not data:
-                raise SDTError(f"dataset {config.dataset!r} needs --data PATH")
-            return load_dataset(registry, spec, data, **options)
-        return open_dataset(registry, data or "synthetic-pump", **options)
+        if config.speeds is not None and "speeds" not in options:
+            try:
+                return _load(config, registry, {**options, "speeds": list(config.speeds)})
+            except TypeError as exc:
+                if "'speeds'" not in str(exc):
+                    raise
+        return _load(config, registry, options)
     except TypeError as exc:
         if "unexpected keyword argument" not in str(exc):
             raise
@@ -257,3 +267,13 @@ def _open(config: BenchmarkConfig, registry: Registry) -> Dataset:
             f"dataset_options {sorted(options)} do not fit the dataset "
             f"({config.dataset or config.data or 'synthetic-pump'}): {exc}"
         ) from None
+
+
+def _load(config: BenchmarkConfig, registry: Registry, options: dict[str, Any]) -> Dataset:
+    data = _data_path(config.data, registry)
+    if config.dataset:
+        spec = registry.dataset(config.dataset)
+        if spec.requires_path and not data:
+            raise SDTError(f"dataset {config.dataset!r} needs --data PATH")
+        return load_dataset(registry, spec, data, **options)
+    return open_dataset(registry, data or "synthetic-pump", **options)

@@ -10,8 +10,9 @@ from typing import Annotated, Any
 import typer
 
 from ..errors import SDTError
-from .common import console, err_console, print_json, registry, shorten_labels, table
-from .dataset_files import cell, inspect_file, is_manifest_csv, manifest
+from .common import err_console, print_json, registry, shorten_labels, table
+from .dataset_files import inspect_file, is_manifest_csv, manifest
+from .dataset_inspect import open_inspected, print_dataset
 
 MANIFESTS = (".csv", ".parquet", ".toml")
 
@@ -149,6 +150,25 @@ def inspect(
     validate: bool = typer.Option(
         False, "--validate", help="Parse every file now (fills the cache; finds bad rows)."
     ),
+    speeds: str | None = typer.Option(
+        None,
+        "--speeds",
+        help="Speed folders to read: 'all' or e.g. 50,75,100 (default: the dataset's own "
+        "choice, for NLN-EMP the paper's speeds).",
+    ),
+    estimate_speed: bool = typer.Option(
+        False,
+        "--estimate-speed",
+        help="Read the speed of each recording that carries none off its spectrum (the 1x "
+        "line near the nominal speed, mains lines skipped): named an estimate, with its "
+        "confidence. Reads those files.",
+    ),
+    nominal_rpm: float | None = typer.Option(
+        None,
+        "--nominal-rpm",
+        help="The speed to look near, rpm (default: the machine's, machines.toml); implies "
+        "--estimate-speed.",
+    ),
 ) -> None:
     """Summarise a dataset: one line per recording, then what was skipped and why.
 
@@ -169,10 +189,12 @@ def inspect(
       sdt dataset inspect data/synthetic --validate
 
       sdt dataset inspect synthetic-pump
+
+      sdt dataset inspect data/synthetic --speeds all
+
+      sdt dataset inspect synthetic-pump --estimate-speed   # its machines give the nominal speed
     """
-    from ..data import open_dataset  # heavy (scipy, pyarrow): on use only
     from ..signals.files import channel_reader
-    from .guards import os_errors
 
     recorder = channel_reader(path_or_name, registry(ctx).signal_readers())
     if recorder is not None:  # a file of channels (IDE)
@@ -188,10 +210,8 @@ def inspect(
             f"folder, a manifest .csv/.parquet, an .IDE file or a registered name"
         )
 
-    with os_errors(path_or_name):
-        dataset = open_dataset(registry(ctx), path_or_name)
-        if validate:
-            dataset.validate()
+    dataset = open_inspected(ctx, path_or_name, speeds=speeds, validate=validate,
+                             estimate=estimate_speed, nominal_rpm=nominal_rpm)  # fmt: skip
     info = dataset.describe()
     for note in dataset.notes:
         err_console.print(f"note: {shorten_labels(note)}", markup=False, highlight=False,
@@ -199,48 +219,7 @@ def inspect(
     if as_json:
         print_json(info)
         return
-    rows = [
-        [
-            cell(r["machine"]),
-            cell(r["speed"] or "-"),
-            cell(r["condition"]),
-            "-" if r["severity"] is None else r["severity"],
-            cell(r["channel"]),
-            cell(r["run"]),
-            cell(r["recording_id"]),
-            r["n_acquisitions"],
-            r["samples_per_acquisition"],
-            f"{r['sampling_rate_hz']:g}",
-        ]
-        for r in info["recordings"]
-    ]
-    header = [
-        "machine",
-        "speed",
-        "condition",
-        "severity",
-        "channel",
-        "run",
-        "recording_id",
-        "acquisitions",
-        "samples",
-        "fs_hz",
-    ]
-    widths = [max(len(str(x)) for x in col) for col in zip(header, *rows, strict=False)]
-    for line in [header, *rows]:
-        console.print(
-            "  ".join(str(x).ljust(w) for x, w in zip(line, widths, strict=True)),
-            highlight=False,
-            soft_wrap=True,
-        )
-    if info["skipped"]:
-        for item in info["skipped"]:
-            console.print(
-                shorten_labels(f"skipped {item['path']}: {item['reason']}"),
-                highlight=False,
-                soft_wrap=True,
-            )
-    console.print(shorten_labels(dataset.summary_line()), highlight=False, soft_wrap=True)
+    print_dataset(info, dataset.summary_line())
 
 
 def _is_signal_file(path: str) -> bool:

@@ -18,7 +18,9 @@ variable (optional)       the signal in the file (CSV column, MATLAB variable,
                           TDMS ``GROUP/CHANNEL``, UFF58 number, WAV ``chN``,
                           LVM channel, IDE ``CHANNEL:AXIS``) as the file names
                           it, spaces included (:func:`.manifest_files.probe_row`)
-speed (optional)          operating point label
+speed (optional)          operating point label (a name: ``50``, ``full load``)
+speed_rpm (optional)      shaft speed of the row, rpm (a positive number; empty:
+                          not known, the spectrum may give an estimate)
 full_scale_g (optional)   a reader's option: g at full scale of an integer WAV
 ========================  =====================================================
 
@@ -40,9 +42,9 @@ would leak them across a train/test split.
 
 from __future__ import annotations
 
-import math
 import os
 from collections.abc import Sequence
+from dataclasses import replace
 from functools import partial
 from pathlib import Path
 from typing import Any
@@ -56,6 +58,7 @@ from ..signals.tokens import quote
 from .manifest_checks import refuse_identical, refuse_shared_ids, refuse_signal_twice
 from .manifest_files import probe_row, reconcile
 from .manifest_table import ManifestRow, read_manifest_rows
+from .manifest_values import severity_cell, speed_fields, speed_rpm_cell
 from .recording import (
     DataFileError,
     Dataset,
@@ -68,28 +71,12 @@ from .recording import (
 __all__ = ["REQUIRED", "UNITS_TO_G", "open_manifest"]
 
 REQUIRED = ("path", "sampling_rate_hz", "condition", "severity", "recording_id", "channel")
-OPTIONAL = ("machine", "units", "variable", "speed", "full_scale_g")
+OPTIONAL = ("machine", "units", "variable", "speed", "speed_rpm", "full_scale_g")
 UNITS_TO_G = {"g": 1.0, "mg": 1e-3, "m/s^2": 1.0 / 9.80665}
 
 
 def _cell(row: ManifestRow, field: str) -> str:
     return row.cells.get(field, "").strip()
-
-
-def _severity(where: str, text: str) -> int | None:
-    """An integer level, or None when empty; 2.0 (Parquet floats) is 2, 1.7 is refused."""
-    if not text or text.lower() == "nan":
-        return None
-    try:
-        value = float(text) if text.isascii() else math.nan  # float("٣") would be 3
-    except ValueError:
-        value = math.nan
-    if not (math.isfinite(value) and value == int(value)):
-        raise SDTError(
-            f"{where}: field 'severity' = {quote(text)} is not an integer; give a whole "
-            f"fault level (1, 2, ...) or leave it empty for healthy"
-        )
-    return int(value)
 
 
 def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
@@ -119,7 +106,8 @@ def _row_fields(manifest: Path, row: ManifestRow) -> dict[str, Any]:
     return {
         "file": file if file.is_absolute() else manifest.parent / file,
         "rate": rate,
-        "severity": _severity(where, _cell(row, "severity")),
+        "severity": severity_cell(where, _cell(row, "severity")),
+        "speed_rpm": speed_rpm_cell(where, _cell(row, "speed_rpm")),
         "units": units,
         "variable": row.cells.get("variable", "") if _cell(row, "variable") else None,
         "machine": _cell(row, "machine") or "machine",
@@ -196,11 +184,12 @@ def open_manifest(
         key = (fields["machine"], fields["run"], fields["channel"])
         groups.setdefault(key, []).append(fields)
     refuse_shared_ids(manifest, groups)
-    recordings = []
+    recordings, lines = [], {}
     for (machine, run, channel), rows in groups.items():
         first = rows[0]
         lengths = {r["shape"][1] for r in rows}
-        meta = {k: {r[k] for r in rows} for k in ("rate", "condition", "severity", "speed")}
+        keys = ("rate", "condition", "severity", "speed", "speed_rpm")
+        meta = {k: {r[k] for r in rows} for k in keys}
         conflict = [k for k, v in meta.items() if len(v) > 1]
         if len(lengths) > 1 or conflict:
             what = ", ".join(conflict) or f"acquisition lengths {sorted(lengths)}"
@@ -214,6 +203,7 @@ def open_manifest(
             )
             continue
         n_acq = sum(r["shape"][0] for r in rows)
+        lines[f"{machine}/{run}/{channel}"] = ", ".join(r["where"] for r in rows)
         recordings.append(
             Recording(
                 dataset=name,
@@ -234,12 +224,17 @@ def open_manifest(
                     _load_rows,
                     tuple((r["file"], r["variable"], r["units"], *r["load"]) for r in rows),
                 ),
+                speed_rpm=first["speed_rpm"],
             )
         )
     if len(notes) > 1:
         notes = [f"{len(notes)} CSV files had a time column, dropped; first: {notes[0]}"]
     notes += list(dict.fromkeys(other_notes))
     machines = _machines_beside(manifest, {r.machine for r in recordings}, notes)
+    recordings = [
+        replace(r, **speed_fields(r.speed_rpm, lines[r.recording_id], machines.get(r.machine)))
+        for r in recordings
+    ]
     dataset = Dataset(name, recordings, skipped, notes, machines)
     if validate:
         dataset.validate()

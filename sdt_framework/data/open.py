@@ -105,6 +105,9 @@ def write_nln_emp(dataset: Dataset, out: str | os.PathLike[str]) -> list[Path]:
 
 
 def _target(out: Path, rec: Recording) -> Path:
+    """The file of ``rec``; a run named ``<speed>/<condition dir>`` (NLN-EMP read at several
+    speeds) goes back to its condition directory under its speed folder."""
     speed = rec.speed or "0"
-    name = f"Vibration_{rec.machine}_{speed}_time-{rec.run}-{rec.channel}.csv"
-    return out / "Vibration" / rec.machine / speed / rec.run / name
+    run = rec.run.removeprefix(f"{speed}/")
+    name = f"Vibration_{rec.machine}_{speed}_time-{run}-{rec.channel}.csv"
+    return out / "Vibration" / rec.machine / speed / run / name

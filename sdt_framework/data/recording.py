@@ -11,6 +11,7 @@ with the file (and row) and counted.
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
@@ -77,10 +78,13 @@ class Recording:
     speed_rpm, speed_percent, speed_source
         The operating (shaft) speed the recording was taken at, in rpm, and in %
         of the machine's rated speed where that is known (variable speed, issue
-        43); ``speed_source`` says where the figure comes from (e.g. "the
-        archive's speed folder", "manifest speed_rpm", "estimated from the
-        spectrum, confidence high"), empty when no speed is known. ``speed`` is
-        the dataset's own label of the operating point (an NLN-EMP speed folder).
+        43); ``speed_source`` says where the figures come from (e.g. "the
+        archive's speed folder", "manifest speed_rpm", "estimate: 1470 rpm ...
+        read off the spectrum, confidence high: ...") or why there is none,
+        empty when nothing is known. ``speed`` is the dataset's own label of
+        the operating point (an NLN-EMP speed folder).
+        :mod:`sdt_framework.data.speed` reads the speed of a recording that
+        carries none off its spectrum.
     """
 
     dataset: str
@@ -183,6 +187,15 @@ class Dataset:
             out.setdefault(f"{rec.machine}/{rec.run}", []).append(rec)
         return out
 
+    def replace(self, recordings: list[Recording]) -> None:
+        """Put each of ``recordings`` in place of the recording with its ``recording_id``
+        (an updated copy: an estimated speed); an id the dataset does not hold is refused."""
+        new = {r.recording_id: r for r in recordings}
+        unknown = set(new) - {r.recording_id for r in self._recordings}
+        if unknown:
+            raise ValueError(f"{self.name}: no recording {sorted(unknown)[0]!r} to replace")
+        self._recordings = [new.get(r.recording_id, r) for r in self._recordings]
+
     def load(self, recording: Recording) -> np.ndarray | None:
         """Load one recording; a bad file is moved to :attr:`skipped` and None returned."""
         try:
@@ -224,6 +237,7 @@ class Dataset:
                 "channels": sorted({r.channel for r in recs}),
                 "acquisitions": sum(r.n_acquisitions for r in recs),
                 "skipped": len(self._skipped),
+                "speeds": _speeds(recs),
             },
         }
 
@@ -235,3 +249,16 @@ class Dataset:
             f"({', '.join(s['machines']) or 'no machines'}), {s['acquisitions']} acquisitions; "
             f"{s['skipped']} skipped"
         )
+
+
+def _speeds(recordings: list[Recording]) -> list[dict[str, Any]]:
+    """Each (machine, speed label, rpm, %, source) the recordings carry, with how many do."""
+    keys = ("machine", "speed", "speed_rpm", "speed_percent", "speed_source")
+    counts = Counter(tuple(getattr(r, k) for k in keys) for r in recordings)
+
+    def order(key: tuple) -> tuple:
+        machine, label, rpm, percent, source = key
+        return machine, math.inf if percent is None else percent, label or "", rpm or 0, source
+
+    rows = sorted(counts.items(), key=lambda kv: order(kv[0]))
+    return [{**dict(zip(keys, key, strict=True)), "recordings": n} for key, n in rows]

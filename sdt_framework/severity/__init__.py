@@ -29,11 +29,13 @@ defect_frequencies, defect_lines ; envelope_spectrum, velocity_spectrum, asd
     the spectra the field reads, with their scaling (the
     velocity spectrum's ``overall`` computed with the window's ENBW).
 estimate_running_speed -> SpeedEstimate ; running_speed
-    The shaft speed off the spectrum, away from mains lines, with its confidence.
+    The shaft speed off the spectrum, away from mains lines, with its confidence
+    (:mod:`sdt_framework.speed`, re-exported).
 """
 
 from __future__ import annotations
 
+from ..speed import MAINS_HZ, SpeedEstimate, estimate_running_speed, running_speed
 from .agreement import Agreement, paired_zones, window_agreement, zone_agreement
 from .alarms import ALARM_FRACTION, HEADROOM, RULE, CriterionII, alarm_bits, alarm_thresholds
 from .assign import assign_tables, spec_tables
@@ -49,7 +51,6 @@ from .spectra import (
     envelope_spectrum,
     velocity_spectrum,
 )
-from .speed import MAINS_HZ, SpeedEstimate, estimate_running_speed, running_speed
 from .tables import (
     ISO_BANDS_HZ,
     MACHINE_GROUPS,

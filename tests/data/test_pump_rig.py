@@ -67,3 +67,17 @@ def test_speed_at_a_point_no_source_gives_is_the_rated_speed_scaled_and_says_so(
     scaled = spec.speed_at(50)
     assert scaled.shaft_rpm == 740.0 and "no source gives the speed" in scaled.source
     assert MachineSpec(name="n", shaft_rpm=2075.0, speed_percent=70.0).speed_at(50) is None
+
+
+def test_motor2_speed_folders_carry_the_archive_s_measured_speeds() -> None:
+    """740 / 1110 / 1480 rpm at 50 / 75 / 100 % (Motor-4: 2075 at 70 %): pumpwatch's SPEED_RPM,
+    read from the archive's 'measurement overview.xlsx' ('Speed (RPM) +- 5'), tagged [M], never
+    the scaled rule."""
+    m2 = rig_machines()["Motor-2"]
+    for percent, rpm in ((50, 740.0), (75, 1110.0), (100, 1480.0)):
+        point = m2.speed_at(percent)
+        assert point.shaft_rpm == rpm and point.source.startswith("[M]"), percent
+        assert "no source gives" not in point.source
+    m4 = rig_machines()["Motor-4"]
+    assert m4.speed_at(70).shaft_rpm == 2075.0 and m4.speed_at(70).source.startswith("[M] 2075")
+    assert m4.speed_at(50) is None  # no rated speed, no point given

@@ -9,7 +9,13 @@ A condition directory is ``"<condition> <level>"``: for faults the level is the
 severity, for ``healthy`` it numbers separate healthy runs. Directory names
 outside the known classes (``coupling 2D``, ``healthy noise``) are reported in
 ``skipped`` unless named in ``conditions``. By default only the paper's subsets
-are selected (Motor-4 at 70 %, Motor-2 at 100 %).
+are selected (Motor-4 at 70 %, Motor-2 at 100 %); ``speeds="all"`` reads every
+speed folder (Motor-2 at 50, 75 and 100 %). Every recording carries the speed
+of its folder (:mod:`.speeds`: ``speed_percent``, ``speed_rpm`` from the rig's
+operating point, ``speed_source`` saying which). A machine read at several
+speed folders has a run per folder: its ``run`` is ``"<speed>/<condition
+dir>"`` (``"50/healthy 1"``), since ``healthy 1`` at 50 % and at 75 % are two
+runs a split may put on two sides; read at one speed, it is the directory.
 """
 
 from __future__ import annotations
@@ -19,6 +25,7 @@ import re
 from collections.abc import Iterable, Mapping
 from functools import partial
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -29,6 +36,7 @@ from sdt_framework.specs import MachineSpec
 
 from ..pump_rig import rig_machines
 from .csv_file import parse_nln_csv, read_header
+from .speeds import FolderSpeed, asked_speeds, folder_speed, speed_filter
 
 __all__ = ["PAPER_SUBSETS", "NlnEmpDataset", "open_nln_emp", "parse_condition"]
 
@@ -86,7 +94,7 @@ def open_nln_emp(
     path: str | os.PathLike[str],
     *,
     motors: str | Iterable[str] | None = None,
-    speeds: str | Iterable[str] | Mapping[str, str] | None = None,
+    speeds: str | float | Iterable[str | float] | Mapping[str, Any] | None = None,
     conditions: str | Iterable[str] | None = None,
     channels: str | Iterable[str] | None = None,
     max_acquisitions: int | None = None,
@@ -102,7 +110,9 @@ def open_nln_emp(
     motors
         Machines to read (``"Motor-4"``); default the paper's two.
     speeds
-        Speed folders (``"70"``), or a mapping machine -> speed; default the paper's.
+        Speed folders: ``"all"``, one (``"70"`` or ``70``) or a list (``[50, 75, 100]``),
+        or a mapping machine -> those; default the paper's (a machine the mapping
+        does not name: the paper's). A machine with none of the speeds named is a note.
     conditions
         Condition classes (``"align angular"``) or exact directory names
         (``"coupling 2D"``); default the paper's classes of each machine.
@@ -124,31 +134,34 @@ def open_nln_emp(
         )
     if max_acquisitions is not None and max_acquisitions < 1:
         raise SDTError(f"max_acquisitions must be >= 1, got {max_acquisitions}")
+    asked_speeds(speeds, "")  # a bad speed is refused before the walk
     store = ArrayCache(cache_dir, enabled=cache)
     wanted_motors = _as_set(motors) or set(PAPER_SUBSETS)
     wanted_channels = _as_set(channels)
     wanted_conditions = _as_set(conditions)
     recordings: list[Recording] = []
     skipped: list[Skipped] = []
+    missing: list[str] = []
+    rig = rig_machines()
     for machine_dir in sorted(p for p in vib.iterdir() if p.is_dir()):
         machine = machine_dir.name
         if machine not in wanted_motors:
             continue
-        if isinstance(speeds, Mapping):
-            wanted_speeds = _as_set(speeds.get(machine))
-        else:
-            wanted_speeds = _as_set(speeds)
-        if wanted_speeds is None:
-            wanted_speeds = {PAPER_SUBSETS[machine][0]} if machine in PAPER_SUBSETS else None
-        classes = wanted_conditions or set(PAPER_SUBSETS.get(machine, ("", ()))[1])
-        for speed_dir in sorted(p for p in machine_dir.iterdir() if p.is_dir()):
-            if wanted_speeds is not None and speed_dir.name not in wanted_speeds:
-                continue
+        paper = PAPER_SUBSETS.get(machine, ("", ()))
+        wanted = speed_filter(speeds, machine, paper[0] or None)
+        classes = wanted_conditions or set(paper[1])
+        folders = sorted(p for p in machine_dir.iterdir() if p.is_dir())
+        chosen = [p for p in folders if wanted is None or wanted(p.name)]
+        if asked_speeds(speeds, machine) is not None and not chosen:
+            missing.append(f"{machine} ({', '.join(p.name for p in folders) or 'none'})")
+        for speed_dir in chosen:
+            speed = folder_speed(machine, speed_dir.name, rig.get(machine))
+            prefix = f"{speed_dir.name}/" if len(chosen) > 1 else ""  # a run per speed
             for cond_dir in sorted(p for p in speed_dir.iterdir() if p.is_dir()):
                 _scan_condition(
                     cond_dir,
                     machine,
-                    speed_dir.name,
+                    (speed_dir.name, speed, prefix),
                     classes,
                     wanted_channels,
                     max_acquisitions,
@@ -158,6 +171,11 @@ def open_nln_emp(
                     skipped,
                 )
     machines, notes = _machines(recordings)
+    if missing:
+        notes.append(
+            f"no speed folder selected by speeds={speeds!r} for {'; '.join(missing)} "
+            f"(folders it has in brackets)"
+        )
     dataset = NlnEmpDataset(name, recordings, skipped, notes, machines)
     if validate:
         dataset.validate()
@@ -191,7 +209,7 @@ def _machines(recordings: list[Recording]) -> tuple[dict[str, MachineSpec], list
 def _scan_condition(
     cond_dir: Path,
     machine: str,
-    speed: str,
+    folder: tuple[str, FolderSpeed, str],
     classes: set[str],
     channels: set[str] | None,
     max_acquisitions: int | None,
@@ -201,6 +219,7 @@ def _scan_condition(
     skipped: list[Skipped],
 ) -> None:
     run = cond_dir.name
+    speed, (percent, rpm, speed_source), prefix = folder
     try:
         condition, severity = parse_condition(run)
     except ValueError as exc:
@@ -246,7 +265,7 @@ def _scan_condition(
                 speed=speed,
                 condition=condition,
                 severity=severity,
-                run=run,
+                run=prefix + run,
                 channel=match["ch"],
                 recording_id=f"{machine}/{speed}/{run}/{match['ch']}",
                 sampling_rate_hz=header.sampling_rate_hz,
@@ -256,6 +275,9 @@ def _scan_condition(
                 measurement=measurement_groups(n_acq),
                 source=str(file),
                 reader=partial(_read, file, store, header.time_step_s, n_acq),
+                speed_rpm=rpm,
+                speed_percent=percent,
+                speed_source=speed_source,
             )
         )
 

@@ -1,5 +1,12 @@
 """The shaft's running speed read off a spectrum, away from mains lines, with its confidence.
 
+A unit of its own at the bottom of the layers (it imports only numpy and
+scipy), so every layer that needs a recording's speed reads it with this one
+function: the data layer where a recording carries no speed
+(:mod:`sdt_framework.data.speed`), features that work in orders of the running
+speed, severity and the report placing defect lines (``severity`` re-exports
+it).
+
 The field places defect lines at the speed the machine ran, not at its
 nameplate speed. The largest line within +-3 % of the nominal speed is that
 speed on most machines, but not on a 2-pole motor on a 50 Hz (60 Hz) supply:
