@@ -204,18 +204,14 @@ def test_seed_determinism_and_selection_independence() -> None:
 
 def test_recordings_name_the_generator_so_old_cached_features_are_not_reused() -> None:
     here = Path(synth_dataset.__file__).parent
+    # every module and data file of the package (the model, the code that draws, the marks
+    # of each speed, the speeds' laws) and the rig's speeds and bearings it reads
+    files = sorted(p.name for p in here.iterdir() if p.suffix in (".py", ".toml"))
+    for needed in ("generate.py", "sources.py", "mix.py", "speeds.py", "marks.toml",
+                   "marks_motor2_50.toml", "speeds.toml", "model.py", "faults.py"):  # fmt: skip
+        assert needed in files
     digest = hashlib.sha256(
-        b"".join(
-            (here / n).read_bytes()
-            for n in (
-                "generate.py",
-                "model.py",
-                "faults.py",
-                "mix.py",
-                "marks.toml",
-                "../pump_rig.toml",  # the rig's speeds and bearings the generator reads
-            )
-        )
+        b"".join((here / n).read_bytes() for n in [*files, "../pump_rig.toml"])
     ).hexdigest()[:12]
     (rec, *_) = open_synthetic(machines="Motor-2").recordings()
     assert rec.metadata()["source"] == f"synthetic (generator {digest})"

@@ -25,7 +25,7 @@ from sdt_framework.errors import SDTError
 
 from . import model as m
 
-__all__ = ["LINE_EXPONENT", "machine_at", "marks", "measured", "percents", "target"]
+__all__ = ["LINE_EXPONENT", "machine_at", "marks", "measured", "percents", "select", "target"]
 
 _HERE = Path(__file__).parent
 _PLAN = tomllib.loads((_HERE / "speeds.toml").read_text(encoding="utf-8"))
@@ -147,3 +147,50 @@ def target(machine: m.Machine, run: str, channel: str) -> tuple[float, float, fl
 def measured(machine: m.Machine, run: str) -> bool:
     """Whether the marks hold ``run`` at the machine's speed (else its class mean stands in)."""
     return run in marks(machine.name, float(machine.speed))
+
+
+def _percents(value: object) -> list[float]:
+    """Speeds given as a number, a list of numbers or a text ("50,75,100"), % of rated."""
+    items = list(value) if isinstance(value, (list, tuple, set, frozenset)) else [value]
+    if isinstance(value, str):
+        items = value.split(",")
+    out = []
+    for item in items:
+        try:
+            out.append(math.nan if isinstance(item, bool) else float(item))  # type: ignore[arg-type]
+        except (TypeError, ValueError):
+            out.append(math.nan)
+    if not out or not all(0 < p < math.inf for p in out):  # NaN fails too
+        raise SDTError(
+            f"synthetic-pump: speeds must be percents of rated speed, e.g. [50, 75, 100] or "
+            f"'50,75,100'; got {value!r}"
+        )
+    return out
+
+
+def select(value: object, names: list[str], explicit: bool) -> list[m.Machine]:
+    """The chosen machines at the chosen speeds (None: each at its paper point)."""
+    if value is None:
+        return [m.MACHINES[name] for name in names]
+    wanted = _percents(value)
+    runs_at = {name: percents(name) for name in names}
+    offered = "; ".join(f"{n} {', '.join(f'{p:g}' for p in ps)} %" for n, ps in runs_at.items())
+    unknown = [
+        p for p in wanted if not any(math.isclose(p, q) for ps in runs_at.values() for q in ps)
+    ]
+    if unknown:
+        raise SDTError(
+            f"synthetic-pump: no machine is generated at {', '.join(f'{p:g}' for p in unknown)} "
+            f"% speed; the speeds are: {offered}"
+        )
+    chosen = {
+        name: [q for q in ps if any(math.isclose(p, q) for p in wanted)]
+        for name, ps in runs_at.items()
+    }
+    idle = [name for name, qs in chosen.items() if not qs]
+    if explicit and idle:
+        raise SDTError(
+            f"synthetic-pump: {', '.join(idle)} runs at none of the speeds "
+            f"{', '.join(f'{p:g}' for p in wanted)} %; the speeds are: {offered}"
+        )
+    return [machine_at(name, q) for name, qs in chosen.items() for q in qs]
