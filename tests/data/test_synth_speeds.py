@@ -120,13 +120,24 @@ def test_each_recording_carries_the_speed_the_rigs_file_gives() -> None:
         assert r.speed_percent == float(r.speed)
         assert r.speed_rpm == MOTOR2.speed_at(r.speed_percent).shaft_rpm
         assert r.speed_source and r.recording_id.startswith(f"Motor-2/{r.speed}/")
-    # the 50 % archive lacks "bearing bpfi 3" (statistics' README): not at 50 or 75 %
-    runs = {(r.speed, r.run) for r in recs}
-    assert ("100", "bearing bpfi 3") in runs
-    assert ("50", "bearing bpfi 3") not in runs and ("75", "bearing bpfi 3") not in runs
-    assert len(runs) == 15 + 14 + 14
+    # the 50 % archive lacks "bearing bpfi 3" (statistics' README): not at 50 or 75 %. A run
+    # per speed, named as the NLN-EMP reader names a run per speed folder
+    runs = {r.run for r in recs}
+    assert "100/bearing bpfi 3" in runs and "50/healthy 1" in runs
+    assert "50/bearing bpfi 3" not in runs and "75/bearing bpfi 3" not in runs
+    assert len(runs) == len(ds.runs()) == 15 + 14 + 14
+    assert all(r.run.split("/")[0] == r.speed for r in recs)
     # one spec holds one operating point: none for a machine at several, and a note says so
     assert ds.machines == {} and any("Motor-2" in note for note in ds.notes)
+
+
+def test_all_speeds_is_each_machine_at_every_speed_it_runs_at() -> None:
+    recs = open_synthetic(speeds="all", channels="ch1").recordings()
+    assert {(r.machine, r.speed) for r in recs} == {
+        ("Motor-4", "70"), ("Motor-2", "50"), ("Motor-2", "75"), ("Motor-2", "100"),
+    }  # fmt: skip
+    # Motor-4 at its one speed keeps the directory name as its run
+    assert {r.run for r in recs if r.machine == "Motor-4"} >= {"healthy 1", "coupling 3"}
 
 
 def test_the_default_is_the_papers_protocol_and_says_its_speed() -> None:

@@ -82,16 +82,22 @@ class SyntheticPump(Dataset):
         self.channels = tuple(channels)
         self._last: tuple[tuple[str, str, str], dict[str, np.ndarray]] | None = None
         recordings = []
+        names = [machine.name for machine in machines]
         for machine in machines:
+            # a machine at several speeds has a run per speed, "<speed>/<run>" as the NLN-EMP
+            # reader names a run per speed folder: the unit a split keeps on one side
+            prefix = f"{machine.speed}/" if names.count(machine.name) > 1 else ""
             for condition, levels in machine.conditions:
                 if conditions is not None and condition not in conditions:
                     continue
                 for level in m.levels_of(machine, condition, levels):
-                    recordings += self._recordings(machine, condition, level)
+                    recordings += self._recordings(machine, condition, level, prefix)
         specs, notes = _specs(machines)
         super().__init__("synthetic-pump", recordings, [], notes, specs)
 
-    def _recordings(self, machine: m.Machine, condition: str, level: int) -> list[Recording]:
+    def _recordings(
+        self, machine: m.Machine, condition: str, level: int, prefix: str
+    ) -> list[Recording]:
         """One recording per channel of the run (metadata only: nothing is generated)."""
         run, name = f"{condition} {level}", machine.name
         columns = self._columns["healthy" if condition == "healthy" else "fault"]
@@ -103,7 +109,7 @@ class SyntheticPump(Dataset):
                 speed=machine.speed,
                 condition=condition,
                 severity=None if condition == "healthy" else level,
-                run=run,
+                run=prefix + run,
                 channel=ch,
                 recording_id=f"{name}/{machine.speed}/{run}/{ch}",
                 sampling_rate_hz=FS_HZ,
@@ -212,7 +218,9 @@ def open_synthetic(
         Motor-4 at 70. Default: the paper's protocol, each machine at its paper point
         (Motor-4 70, Motor-2 100). Given, each chosen machine is generated at each of
         these speeds it runs at, and only the machines that run at one of them are
-        chosen unless ``machines`` names them (``[50, 75, 100]``: Motor-2 alone).
+        chosen unless ``machines`` names them (``[50, 75, 100]``: Motor-2 alone);
+        ``"all"``: every speed of each. A machine at several speeds has a run per speed,
+        ``"50/healthy 1"`` (the NLN-EMP reader's name of a run per speed folder).
     """
     if not isinstance(triaxial, bool):
         raise SDTError(f"synthetic-pump: triaxial must be true or false, got {triaxial!r}")

@@ -162,16 +162,20 @@ def _percents(value: object) -> list[float]:
             out.append(math.nan)
     if not out or not all(0 < p < math.inf for p in out):  # NaN fails too
         raise SDTError(
-            f"synthetic-pump: speeds must be percents of rated speed, e.g. [50, 75, 100] or "
-            f"'50,75,100'; got {value!r}"
+            f"synthetic-pump: speeds must be percents of rated speed, e.g. [50, 75, 100], "
+            f"'50,75,100' or 'all'; got {value!r}"
         )
     return out
 
 
 def select(value: object, names: list[str], explicit: bool) -> list[m.Machine]:
-    """The chosen machines at the chosen speeds (None: each at its paper point)."""
+    """The chosen machines at the chosen speeds (None: each at its paper point; "all": every
+    speed each runs at); a speed no chosen machine runs at, or a machine the user named that
+    runs at none of them, is one line."""
     if value is None:
         return [m.MACHINES[name] for name in names]
+    if isinstance(value, str) and value.strip().lower() == "all":
+        return [machine_at(name, q) for name in names for q in percents(name)]
     wanted = _percents(value)
     runs_at = {name: percents(name) for name in names}
     offered = "; ".join(f"{n} {', '.join(f'{p:g}' for p in ps)} %" for n, ps in runs_at.items())
