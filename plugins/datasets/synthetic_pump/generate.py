@@ -11,11 +11,10 @@ session, ``faults.SESSIONS``), and each channel's response to the healthy
 machine and to flow noise with its mounting, drawn per healthy run, or per fault
 class (shared by its levels), calibrated to the real archive's spread
 (docs/data.md). All draws come from ``seeding.rng(seed, machine, run, class or
-session, ...)``: the same seed gives bit-identical signals
-whatever the selection or loading order. Generation is vectorised: harmonics
-as complex exponentials, impulse trains by index arithmetic filtered by
-band-pass resonators (``scipy.signal.lfilter``), cavitation as band-passed
-noise under burst envelopes (``fftconvolve``).
+session, ...)``: the same seed gives bit-identical signals whatever the
+selection or loading order. At another speed (``speeds.py``) the run keeps its
+installation and draws its acquisitions anew. The sources are drawn in
+``sources.py``; here each channel's path and mix.
 """
 
 from __future__ import annotations
