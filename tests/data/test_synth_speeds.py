@@ -8,7 +8,6 @@ user gives (``speeds`` in ``dataset_options``, ``sdt dataset synth --speeds``).
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import subprocess
 import sys
@@ -18,13 +17,15 @@ import pytest
 from scipy import signal
 from sdt_plugins.datasets.nln_emp import open_nln_emp
 from sdt_plugins.datasets.pump_rig import rig_machines
-from sdt_plugins.datasets.synthetic_pump import model, open_synthetic
+from sdt_plugins.datasets.synthetic_pump import open_synthetic
 from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 
 from sdt_framework.bench.config import load_config
 from sdt_framework.bench.plan import plan_benchmark
 from sdt_framework.errors import SDTError
 from sdt_framework.registry import build_registry
+
+from .synth_common import amplitude_near
 
 FS = 20000.0
 MOTOR2 = rig_machines()["Motor-2"]
@@ -42,15 +43,6 @@ def run(condition: str, level: int, channels, percent: float, seconds: float = 4
         "Motor-2", condition, level, channels=tuple(channels), acquisitions=1,
         duration_s=seconds, seed=seed, speed=percent,
     )  # fmt: skip
-
-
-def amplitude_near(x: np.ndarray, freq: float, tol: float = 0.03) -> float:
-    """Amplitude of the sinusoid within freq*(1 +/- tol) (Hann-windowed power, Parseval)."""
-    w = np.hanning(x.size)
-    spec = np.abs(np.fft.rfft(x * w)) ** 2
-    f = np.fft.rfftfreq(x.size, 1 / FS)
-    power = spec[(f > freq * (1 - tol)) & (f < freq * (1 + tol))].sum()
-    return float(np.sqrt(4 * power / (x.size * np.sum(w * w))))
 
 
 @pytest.mark.parametrize("percent", [50, 75, 100])
@@ -78,16 +70,6 @@ def test_the_motor_bearings_defect_line_moves_with_the_speed(percent) -> None:
     sel = (f >= 10) & (f <= 400)
     line = spec[(f > bpfo * 0.98) & (f < bpfo * 1.02)].max()
     assert line > 10 * np.median(spec[sel])
-
-
-@pytest.fixture
-def no_scatter(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The physical model alone: no installation scatter, drift or source scatter."""
-    for name in ("FLOW_POINT_SD", "HF_MOUNT_SD", "ACQUISITION_DRIFT", "AMPLITUDE_SCATTER"):
-        monkeypatch.setattr(model, name, 0.0)
-    monkeypatch.setattr(model, "LEVEL_SCATTER", (0.0, 0.0))
-    for ch, path in model.CHANNELS.items():
-        monkeypatch.setitem(model.CHANNELS, ch, dataclasses.replace(path, install_sd=0.0))
 
 
 @pytest.mark.usefixtures("no_scatter")

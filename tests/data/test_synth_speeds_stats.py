@@ -28,6 +28,8 @@ from sdt_plugins.datasets.synthetic_pump import model
 from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 from sdt_plugins.datasets.synthetic_pump.speeds import machine_at, marks
 
+from .synth_common import measure
+
 HERE = Path(__file__).parent
 STATS = HERE / "nln_emp_stats"
 ROOT = HERE.parents[1]
@@ -56,14 +58,6 @@ def generated() -> set[str]:
         for k in range(1, levels + 1)
         if (c, k) not in machine.absent
     }
-
-
-def measure(x: np.ndarray) -> dict[str, float]:
-    rms = float(np.sqrt(np.mean(x**2)))
-    centred = x - x.mean()
-    peak = float(np.max(np.abs(x)))
-    kurtosis = float(np.mean(centred**4) / np.mean(centred**2) ** 2)
-    return {"rms_g": rms, "peak_g": peak, "kurtosis_pearson": kurtosis, "crest_factor": peak / rms}
 
 
 def bounds() -> dict[str, tuple[float, float]]:
