@@ -56,6 +56,12 @@ def synth(
     duration: float | None = typer.Option(
         None, "--duration", help="Seconds per acquisition (default 12)."
     ),
+    speeds: str | None = typer.Option(
+        None,
+        "--speeds",
+        help="Speeds, % of rated, comma-separated (Motor-2: 50, 75, 100; Motor-4: 70), each in "
+        "Vibration/<machine>/<speed>/. Default: the paper's (Motor-4 70, Motor-2 100).",
+    ),
     overwrite: bool = typer.Option(
         False,
         "--overwrite",
@@ -82,6 +88,8 @@ def synth(
       sdt dataset synth --out data/synthetic --seed 1 --acquisitions 5 --duration 12
 
       sdt dataset synth --out data/synthetic --duration 2 --overwrite
+
+      sdt dataset synth --out data/speeds --speeds 50,75,100 --duration 2
     """
     from ..data import open_dataset, write_nln_emp  # heavy (scipy, pyarrow): on use only
     from ..data.sizes import synth_cost
@@ -91,7 +99,7 @@ def synth(
         raise SDTError(f"--duration {duration}: give a finite number of seconds above 0.2")
     with os_errors(str(out)):
         existing = _existing_recordings(out, overwrite)
-        given = {"seed": seed, "acquisitions": acquisitions, "duration": duration}
+        given = {"seed": seed, "acquisitions": acquisitions, "duration": duration, "speeds": speeds}
         options = {key: value for key, value in given.items() if value is not None}
         dataset = open_dataset(registry(ctx), "synthetic-pump", **options)
         recordings = dataset.recordings()

@@ -93,6 +93,9 @@ def _write_csv(target: Path, data: np.ndarray, fs: float) -> None:
 def write_nln_emp(dataset: Dataset, out: str | os.PathLike[str]) -> list[Path]:
     """Write every recording as ``Vibration/<machine>/<speed>/<run>/...-<ch>.csv``.
 
+    A run named per speed folder (``"50/healthy 1"``: a machine at several speeds) is
+    written under its speed folder as the directory it names (``healthy 1``).
+
     Values are rounded to 6 significant digits (relative error < 5e-7, far
     below any accelerometer's noise); the time column is exact. Each file is
     written atomically. Returns the written paths.
@@ -108,6 +111,6 @@ def _target(out: Path, rec: Recording) -> Path:
     """The file of ``rec``; a run named ``<speed>/<condition dir>`` (NLN-EMP read at several
     speeds) goes back to its condition directory under its speed folder."""
     speed = rec.speed or "0"
-    run = rec.run.removeprefix(f"{speed}/")
+    run = rec.run.removeprefix(f"{speed}/")  # a run per speed folder is "<speed>/<dir>"
     name = f"Vibration_{rec.machine}_{speed}_time-{run}-{rec.channel}.csv"
     return out / "Vibration" / rec.machine / speed / run / name

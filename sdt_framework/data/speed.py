@@ -177,7 +177,11 @@ def speed_matches(recording: Recording, value: float | str) -> bool:
 def _speeds_of(recordings: Sequence[Recording]) -> str:
     """The speeds ``recordings`` run at, for a message."""
     seen = {(r.machine, r.speed or "-", r.speed_percent) for r in recordings}
-    ordered = sorted(seen, key=lambda s: (s[0], math.inf if s[2] is None else s[2], s[1]))
+    def order(s: tuple) -> tuple:  # by % of rated, else by the label's number, else its text
+        value = s[2] if s[2] is not None else _number(s[1])
+        return (s[0], math.inf if value is None else value, s[1])
+
+    ordered = sorted(seen, key=order)
     return ", ".join(
         f"{m} {label}" + ("" if p is None or _number(label) == p else f" ({p:g} %)")
         for m, label, p in ordered

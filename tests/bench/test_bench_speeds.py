@@ -62,9 +62,31 @@ def test_a_speed_the_data_lacks_is_one_line_naming_what_it_has(small_config, reg
     )
 
 
-def test_a_dataset_without_a_speeds_option_is_selected_by_its_labels(small_config, registry):
-    # the synthetic pump labels its runs with the rig's speed (Motor-2: '100')
-    plan = plan_benchmark(small_config(speeds=[100.0]), registry)
+def test_a_dataset_without_a_speeds_option_is_selected_by_its_labels(registry, tmp_path):
+    """A manifest has no speeds option: ``speeds`` keeps the rows whose speed label matches."""
+    import numpy as np
+
+    from sdt_framework.bench.config import BenchmarkConfig
+
+    rows = ["path,sampling_rate_hz,machine,condition,severity,recording_id,channel,speed"]
+    for speed in ("50", "100"):
+        for run, condition, level in (
+            ("h1", "healthy", ""), ("h2", "healthy", ""), ("h3", "healthy", ""),
+            ("f1", "fault", "1"), ("f2", "fault", "2"), ("f3", "fault", "3"),
+        ):  # fmt: skip
+            name = f"{speed}-{run}.npy"
+            np.save(tmp_path / name, np.zeros(20_000))
+            rows.append(f"{name},20000,m,{condition},{level},{speed}/{run},ch1,{speed}")
+    manifest = tmp_path / "m.csv"
+    manifest.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    config = BenchmarkConfig(data=str(manifest), speeds=[100.0], cache_dir=str(tmp_path / "c"))
+    plan = plan_benchmark(config, registry)
     assert {r.speed for r in plan.recordings} == {"100"} and plan.recordings
-    with pytest.raises(SDTError, match=r"^speeds: no recording at 50; the data has Motor-2 100"):
-        plan_benchmark(small_config(speeds=[50.0]), registry)
+    with pytest.raises(SDTError, match=r"^speeds: no recording at 75; the data has m 50, m 100"):
+        plan_benchmark(config.model_copy(update={"speeds": [75.0]}), registry)
+
+
+def test_the_synthetic_pumps_speeds_option_is_reached(small_config, registry):
+    """The synthetic pump generates Motor-2 at the speeds asked (its ``speeds`` option)."""
+    plan = plan_benchmark(small_config(speeds=[50.0]), registry)
+    assert {(r.speed, r.speed_rpm) for r in plan.recordings} == {("50", 740.0)}

@@ -7,7 +7,6 @@ it must reproduce (docs/data.md, "Calibration").
 
 from __future__ import annotations
 
-import dataclasses
 import hashlib
 from pathlib import Path
 
@@ -23,6 +22,8 @@ from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 from sdt_framework.api import degrade
 from sdt_framework.errors import SDTError
 from sdt_framework.registry import build_registry
+
+from .synth_common import amplitude_near
 
 FS = 20000.0
 # Motor-4 at 70 % runs at 2075 rpm (2-pole motor); Motor-2 at 100 % at 1480 rpm
@@ -48,16 +49,6 @@ def gen(machine: str, condition: str, level: int, channels, duration=1.0, seed=0
     )
 
 
-def amplitude_near(x: np.ndarray, freq: float, tol: float = 0.03) -> float:
-    """Amplitude of the sinusoid within freq*(1 +/- tol): Hann-windowed power summed over
-    the band (Parseval), so it does not depend on where the line falls between bins."""
-    w = np.hanning(x.size)
-    spec = np.abs(np.fft.rfft(x * w)) ** 2
-    f = np.fft.rfftfreq(x.size, 1 / FS)
-    power = spec[(f > freq * (1 - tol)) & (f < freq * (1 + tol))].sum()
-    return float(np.sqrt(4 * power / (x.size * np.sum(w * w))))
-
-
 def envelope_spectrum(x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Spectrum of the Hilbert envelope of the 2-8 kHz band."""
     band = signal.sosfiltfilt(signal.butter(4, [2000, 8000], "bandpass", fs=FS, output="sos"), x)
@@ -69,16 +60,6 @@ def band_rms(x: np.ndarray, lo: float, hi: float) -> float:
     f, p = signal.welch(x, fs=FS, nperseg=4096)
     sel = (f >= lo) & (f < hi)
     return float(np.sqrt(np.trapezoid(p[sel], f[sel])))
-
-
-@pytest.fixture
-def no_scatter(monkeypatch: pytest.MonkeyPatch) -> None:
-    """The physical model alone: no installation scatter, drift or source scatter."""
-    for name in ("FLOW_POINT_SD", "HF_MOUNT_SD", "ACQUISITION_DRIFT", "AMPLITUDE_SCATTER"):
-        monkeypatch.setattr(model, name, 0.0)
-    monkeypatch.setattr(model, "LEVEL_SCATTER", (0.0, 0.0))
-    for ch, path in model.CHANNELS.items():
-        monkeypatch.setitem(model.CHANNELS, ch, dataclasses.replace(path, install_sd=0.0))
 
 
 def test_default_dataset_shape_without_generating() -> None:
@@ -204,18 +185,14 @@ def test_seed_determinism_and_selection_independence() -> None:
 
 def test_recordings_name_the_generator_so_old_cached_features_are_not_reused() -> None:
     here = Path(synth_dataset.__file__).parent
+    # every module and data file of the package (the model, the code that draws, the marks
+    # of each speed, the speeds' laws) and the rig's speeds and bearings it reads
+    files = sorted(p.name for p in here.iterdir() if p.suffix in (".py", ".toml"))
+    for needed in ("generate.py", "sources.py", "mix.py", "speeds.py", "marks.toml",
+                   "marks_motor2_50.toml", "speeds.toml", "model.py", "faults.py"):  # fmt: skip
+        assert needed in files
     digest = hashlib.sha256(
-        b"".join(
-            (here / n).read_bytes()
-            for n in (
-                "generate.py",
-                "model.py",
-                "faults.py",
-                "mix.py",
-                "marks.toml",
-                "../pump_rig.toml",  # the rig's speeds and bearings the generator reads
-            )
-        )
+        b"".join((here / n).read_bytes() for n in [*files, "../pump_rig.toml"])
     ).hexdigest()[:12]
     (rec, *_) = open_synthetic(machines="Motor-2").recordings()
     assert rec.metadata()["source"] == f"synthetic (generator {digest})"

@@ -23,6 +23,8 @@ import pytest
 from sdt_plugins.datasets.synthetic_pump import model as model
 from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 
+from .synth_common import measure
+
 HERE = Path(__file__).parent
 STATS = HERE / "nln_emp_stats"
 GUARD = json.loads((HERE / "synth_stats_guard.json").read_text())
@@ -38,14 +40,6 @@ def real_rows() -> dict[tuple[str, str, str], dict[str, float]]:
             for r in csv.DictReader(handle)
             if SPEED.get(r["machine"]) == r["speed_pct"]
         }
-
-
-def measure(x: np.ndarray) -> dict[str, float]:
-    rms = float(np.sqrt(np.mean(x**2)))
-    centred = x - x.mean()
-    peak = float(np.max(np.abs(x)))
-    kurtosis = float(np.mean(centred**4) / np.mean(centred**2) ** 2)
-    return {"rms_g": rms, "peak_g": peak, "kurtosis_pearson": kurtosis, "crest_factor": peak / rms}
 
 
 @pytest.fixture(scope="module")

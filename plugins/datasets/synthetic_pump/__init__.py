@@ -2,9 +2,11 @@
 
 The generator is this package: :mod:`.model` (the rig's constants, its speeds
 and bearings read from ``../pump_rig.toml``), :mod:`.faults` (the fault
-signatures), :mod:`.mix` with ``marks.toml`` (each channel's level and
-impulsiveness from the real archive's statistics), :mod:`.generate` (one run,
-every channel) and :mod:`.dataset` (the recordings, ``open_synthetic``).
+signatures), :mod:`.sources` (what the rig does in one acquisition),
+:mod:`.mix` (each channel's level and impulsiveness from the real archive's
+statistics), :mod:`.speeds` with ``speeds.toml`` (the machines at each speed and
+their marks: ``marks.toml``, ``marks_motor2_50.toml``), :mod:`.generate` (one
+run, every channel) and :mod:`.dataset` (the recordings, ``open_synthetic``).
 Those modules are imported on use, so listing plugins stays fast.
 """
 

@@ -25,6 +25,7 @@ from sdt_framework.data.recording import measurement_groups
 from sdt_framework.errors import SDTError
 
 from . import model as m
+from . import speeds as sp
 from .generate import FS_HZ, generate_run
 
 __all__ = ["DEFAULTS", "GENERATOR", "SyntheticPump", "open_synthetic"]
@@ -33,12 +34,15 @@ DEFAULTS = {"seed": 0, "acquisitions": 1, "duration": 12.0}
 #: ``layout = "real"``: the real archive's columns per run (12 s each, five per 60 s
 #: acquisition): healthy 60, a fault 15 (the data article: 10-20, 2-4 acquisitions)
 REAL_LAYOUT = {"healthy": m.REAL_COLUMNS["healthy"], "fault": 15}
-#: fingerprint of the generator: the model, the fault signatures, the code that draws and
-#: the rig's speeds and bearings it reads
-MODULES = ("generate.py", "model.py", "faults.py", "mix.py", "marks.toml", "../pump_rig.toml")
-GENERATOR = hashlib.sha256(
-    b"".join(Path(__file__).parent.joinpath(n).read_bytes() for n in MODULES)
-).hexdigest()[:12]
+#: fingerprint of the generator: every module and data file of this package (the model,
+#: the fault signatures, the code that draws, the marks and speeds) and the rig's speeds and
+#: bearings it reads
+_HERE = Path(__file__).parent
+_FILES = sorted(p.name for p in _HERE.iterdir() if p.suffix in (".py", ".toml"))
+MODULES = (*_FILES, "../pump_rig.toml")
+GENERATOR = hashlib.sha256(b"".join(_HERE.joinpath(n).read_bytes() for n in MODULES)).hexdigest()[
+    :12
+]
 
 
 def _select(value: str | Iterable[str] | None, known: Iterable[str], what: str) -> list[str]:
@@ -64,7 +68,7 @@ class SyntheticPump(Dataset):
         seed: int,
         acquisitions: int,
         duration: float,
-        machines: list[str],
+        machines: list[m.Machine],
         channels: list[str],
         conditions: list[str] | None,
         layout: str = "compact",
@@ -76,43 +80,57 @@ class SyntheticPump(Dataset):
         if layout == "real":
             self._columns = dict(REAL_LAYOUT)
         self.channels = tuple(channels)
-        self._last: tuple[tuple[str, str], dict[str, np.ndarray]] | None = None
-        n = round(duration * FS_HZ)
+        self._last: tuple[tuple[str, str, str], dict[str, np.ndarray]] | None = None
         recordings = []
-        for name in machines:
-            machine = m.MACHINES[name]
+        names = [machine.name for machine in machines]
+        for machine in machines:
+            # a machine at several speeds has a run per speed, "<speed>/<run>" as the NLN-EMP
+            # reader names a run per speed folder: the unit a split keeps on one side
+            prefix = f"{machine.speed}/" if names.count(machine.name) > 1 else ""
             for condition, levels in machine.conditions:
                 if conditions is not None and condition not in conditions:
                     continue
                 for level in m.levels_of(machine, condition, levels):
-                    run = f"{condition} {level}"
-                    columns = self._columns["healthy" if condition == "healthy" else "fault"]
-                    for ch in channels:
-                        recordings.append(
-                            Recording(
-                                dataset="synthetic-pump",
-                                machine=name,
-                                speed=machine.speed,
-                                condition=condition,
-                                severity=None if condition == "healthy" else level,
-                                run=run,
-                                channel=ch,
-                                recording_id=f"{name}/{machine.speed}/{run}/{ch}",
-                                sampling_rate_hz=FS_HZ,
-                                units="g",
-                                n_acquisitions=columns,
-                                samples_per_acquisition=n,
-                                measurement=measurement_groups(columns),
-                                source=f"synthetic (generator {GENERATOR})",
-                                reader=partial(self._generate, name, condition, level, ch),
-                            )
-                        )
-        super().__init__(
-            "synthetic-pump", recordings, [], machines={name: m.RIG[name] for name in machines}
-        )
+                    recordings += self._recordings(machine, condition, level, prefix)
+        specs, notes = _specs(machines)
+        super().__init__("synthetic-pump", recordings, [], notes, specs)
 
-    def _generate(self, machine: str, condition: str, level: int, channel: str) -> np.ndarray:
-        key = (machine, f"{condition} {level}")
+    def _recordings(
+        self, machine: m.Machine, condition: str, level: int, prefix: str
+    ) -> list[Recording]:
+        """One recording per channel of the run (metadata only: nothing is generated)."""
+        run, name = f"{condition} {level}", machine.name
+        columns = self._columns["healthy" if condition == "healthy" else "fault"]
+        point = m.RIG[name].speed_at(float(machine.speed))
+        return [
+            Recording(
+                dataset="synthetic-pump",
+                machine=name,
+                speed=machine.speed,
+                condition=condition,
+                severity=None if condition == "healthy" else level,
+                run=prefix + run,
+                channel=ch,
+                recording_id=f"{name}/{machine.speed}/{run}/{ch}",
+                sampling_rate_hz=FS_HZ,
+                units="g",
+                n_acquisitions=columns,
+                samples_per_acquisition=round(self.duration * FS_HZ),
+                measurement=measurement_groups(columns),
+                source=f"synthetic (generator {GENERATOR})",
+                reader=partial(self._generate, machine.speed, name, condition, level, ch),
+                speed_rpm=machine.rpm,
+                speed_percent=float(machine.speed),
+                speed_source=f"the generator's shaft speed, the rig's file at "
+                f"{machine.speed} %: {point.source if point else ''}",
+            )
+            for ch in self.channels
+        ]
+
+    def _generate(
+        self, speed: str, machine: str, condition: str, level: int, channel: str
+    ) -> np.ndarray:
+        key = (speed, machine, f"{condition} {level}")
         if self._last is None or self._last[0] != key:
             self._last = None  # free the previous run before generating the next
             self._last = (
@@ -126,9 +144,35 @@ class SyntheticPump(Dataset):
                     duration_s=self.duration,
                     seed=self.seed,
                     glitches=self.glitches,
+                    speed=float(speed),
                 ),
             )
         return self._last[1][channel]
+
+
+def _specs(machines: list[m.Machine]) -> tuple[dict, list[str]]:
+    """The rig's spec of each machine generated at its spec's speed only, a note for another.
+
+    A spec holds one operating point (Motor-2 at 100 %): its shaft speed and bearing lines
+    do not hold at another speed, as the NLN-EMP reader hands them; each recording carries
+    its own speed (``speed_rpm``).
+    """
+    found: dict[str, list[str]] = {}
+    for machine in machines:
+        found.setdefault(machine.name, []).append(machine.speed)
+    specs, notes = {}, []
+    for name, at in found.items():
+        spec = m.RIG[name]
+        if at == [f"{spec.speed_percent:g}"]:
+            specs[name] = spec
+            continue
+        notes.append(
+            f"{name}: the rig's machine spec is for {spec.speed_percent:g} % speed "
+            f"({spec.shaft_rpm:g} rpm), the recordings are at {', '.join(at)} % (each carries "
+            f"its speed_rpm): no machine spec (no defect lines, no default zone table); give one "
+            f"in the config's [benchmark.machine_specs.{name}] (docs/severity.md)"
+        )
+    return specs, notes
 
 
 def open_synthetic(
@@ -143,6 +187,7 @@ def open_synthetic(
     triaxial: bool = False,
     layout: str = "compact",
     glitches: bool = True,
+    speeds: float | str | Iterable[float | str] | None = None,
 ) -> SyntheticPump:
     """The synthetic pump dataset (``path`` is ignored: nothing is read from disk).
 
@@ -168,6 +213,14 @@ def open_synthetic(
         Common-mode glitches at the real archive's rate (21 of 575 records; on by default,
         as the real records carry them): spikes on several channels of one column at once,
         up to the recorder's +-50 g.
+    speeds
+        Operating speeds, % of rated (``speeds.toml``): Motor-2 runs at 50, 75 and 100,
+        Motor-4 at 70. Default: the paper's protocol, each machine at its paper point
+        (Motor-4 70, Motor-2 100). Given, each chosen machine is generated at each of
+        these speeds it runs at, and only the machines that run at one of them are
+        chosen unless ``machines`` names them (``[50, 75, 100]``: Motor-2 alone);
+        ``"all"``: every speed of each. A machine at several speeds has a run per speed,
+        ``"50/healthy 1"`` (the NLN-EMP reader's name of a run per speed folder).
     """
     if not isinstance(triaxial, bool):
         raise SDTError(f"synthetic-pump: triaxial must be true or false, got {triaxial!r}")
@@ -180,6 +233,7 @@ def open_synthetic(
     if not 0.2 < float(duration) < math.inf:
         raise SDTError(f"synthetic-pump: duration must be a finite number > 0.2 s, got {duration}")
     chosen_machines = _select(machines, m.MACHINES, "machine")
+    at_speeds = sp.select(speeds, chosen_machines, explicit=machines is not None)
     known_conditions = {c for name in chosen_machines for c, _ in m.MACHINES[name].conditions}
     chosen_conditions = (
         None if conditions is None else _select(conditions, sorted(known_conditions), "condition")
@@ -188,7 +242,7 @@ def open_synthetic(
         seed=int(seed),
         acquisitions=int(acquisitions),
         duration=float(duration),
-        machines=chosen_machines,
+        machines=at_speeds,
         channels=_select(
             channels, [*m.CHANNELS, *m.NODE_CHANNELS] if triaxial else m.CHANNELS, "channel"
         ),

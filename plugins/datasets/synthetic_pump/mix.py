@@ -4,9 +4,10 @@ The physical sources of ``generate.py`` decide *what* a channel carries (shaft
 lines and their phases, a bearing's impacts at its defect rate, cavitation
 bursts at vane passes, the throttled valve's hiss, flow noise ringing the
 casing modes); the real archive decides *how much* of each. The real figures
-(``marks.toml``: RMS, Pearson kurtosis and crest factor of the first 12 s
-of every real record, per run and channel) fix three numbers per channel; a
-column is mixed from independent zero-mean parts so that it reproduces them:
+(``marks.toml`` and, at other speeds, ``speeds.py``: RMS, Pearson kurtosis and
+crest factor of the first 12 s of every real record, per run and channel) fix
+three numbers per channel; a column is mixed from independent zero-mean parts so
+that it reproduces them:
 
 - the shaft-synchronous part L, kept at its physical level (the band-RMS figures
   of ``calibrate_synth.py`` rest on it), scaled down only where the real channel
@@ -30,16 +31,12 @@ are not in the data: they stay the physical model's.
 
 from __future__ import annotations
 
-import tomllib
 from functools import cache
-from pathlib import Path
 
 import numpy as np
 from scipy import signal
 
-__all__ = [
-    "TONE_ORDER", "add_glitch", "column_drift", "column_goal", "measured", "mix_column", "target",
-]  # fmt: skip
+__all__ = ["TONE_ORDER", "add_glitch", "column_drift", "column_goal", "mix_column"]
 
 #: the stationary line's shaft order: rotor slot passing, a motor's electromagnetic line in
 #: the kHz (Motor-4 1.5 kHz, Motor-2 1.1 kHz); no source for the slot count, chosen above
@@ -57,34 +54,6 @@ FAULT_SHARE, FAULT_FLOOR, FAULT_CAP = 0.5, 0.1, 0.6
 GAUSS_CREST = 4.7
 #: the mean |value| of the other parts where one knock lands, in RMS units (|N(0, 1)|: 0.8)
 KNOCK_BACKGROUND = 0.8
-
-
-@cache
-def _table() -> dict:
-    with Path(__file__).with_name("marks.toml").open("rb") as handle:
-        return tomllib.load(handle)
-
-
-def target(machine: str, run: str, channel: str) -> tuple[float, float, float]:
-    """(RMS g, kurtosis, crest factor) of the real record (machine, run, channel).
-
-    The triaxial node's ch6 (horizontal, no real counterpart) takes ch1's, the other
-    horizontal motor channel. A run the real archive lacks (a level or healthy run
-    beyond the real ones, asked for through ``generate_run``) takes the mean of its
-    class's real runs on that channel.
-    """
-    name = "ch1" if channel == "ch6" else channel
-    runs = _table()[machine]
-    if run in runs:
-        return tuple(runs[run][name])  # type: ignore[return-value]
-    condition = run.rsplit(" ", 1)[0]
-    rows = [v[name] for k, v in runs.items() if k.rsplit(" ", 1)[0] == condition]
-    return tuple(float(np.mean(col)) for col in zip(*rows, strict=True))  # type: ignore[return-value]
-
-
-def measured(machine: str, run: str) -> bool:
-    """Whether the real archive holds ``run`` of ``machine`` (else its class mean stands in)."""
-    return run in _table()[machine]
 
 
 def _power(x: np.ndarray) -> float:

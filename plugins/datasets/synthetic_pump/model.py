@@ -68,18 +68,30 @@ MOTOR_BEARING, PUMP_BEARING = RIG["Motor-2"].bearings  # 6309 at the motor, 6308
 
 @dataclass(frozen=True)
 class Machine:
-    """A motor-pump set at one operating point, with its conditions and levels."""
+    """A motor-pump set at one operating point, with its conditions and levels.
+
+    ``MACHINES`` holds each at its paper point; ``speeds.machine_at`` the others, whose
+    ``key`` (default: the name) names their random draws, so a run at another speed is
+    another recording, and whose ``line_scale`` scales the shaft-synchronous lines.
+    """
 
     name: str
     speed: str
     rpm: float
     conditions: tuple[tuple[str, int], ...]  # (class, number of levels / healthy runs)
     absent: frozenset[tuple[str, int]] = frozenset()  # levels the real archive does not hold
+    key: str = ""  # the random draws' name for the machine at this speed ("": the name)
+    line_scale: float = 1.0  # lines' acceleration over their level at the paper point
 
     @property
     def shaft_hz(self) -> float:
         """Nominal running speed, Hz."""
         return self.rpm / 60.0
+
+    @property
+    def draws(self) -> str:
+        """The name the random draws of this machine's runs are keyed by."""
+        return self.key or self.name
 
 
 def _speed(name: str) -> tuple[str, float]:
