@@ -177,6 +177,7 @@ def speed_matches(recording: Recording, value: float | str) -> bool:
 def _speeds_of(recordings: Sequence[Recording]) -> str:
     """The speeds ``recordings`` run at, for a message."""
     seen = {(r.machine, r.speed or "-", r.speed_percent) for r in recordings}
+
     def order(s: tuple) -> tuple:  # by % of rated, else by the label's number, else its text
         value = s[2] if s[2] is not None else _number(s[1])
         return (s[0], math.inf if value is None else value, s[1])
