@@ -30,6 +30,7 @@ ALLOWED: dict[str, set[str]] = {
     "labels": set(),
     "lazy": set(),
     "csv_cells": set(),
+    "units": set(),
     "inputs": {"errors"},
     "io": {"errors"},
     "toml_files": {"errors", "inputs"},
@@ -51,17 +52,17 @@ ALLOWED: dict[str, set[str]] = {
         "specs",
         "stages",
     },
-    "signals": {"dtypes", "errors", "inputs", "lazy"},
+    "signals": {"dtypes", "errors", "inputs", "lazy", "units"},
     # seeding left with the generator, now the synthetic-pump plugin's package
-    "data": _IO | {"dtypes", "lazy", "machine_files", "signals", "specs"},
+    "data": _IO | {"dtypes", "lazy", "machine_files", "signals", "specs", "units"},
     "chain": _BASE | _IO | {"arguments", "data", "specs", "stages"},
     "features": {"arguments", "csv_cells", "errors", "io", "specs"},
     "edge": {"errors", "specs", "toml_files"},
-    "validation": _IO | {"chain", "specs", "stages"},
+    "validation": _IO | {"chain", "specs", "stages", "units"},
     "api": {"arguments", "chain", "errors", "features", "registry", "specs"},
     "conformance": {"chain", "errors", "features", "parts", "registry", "specs", "stages"},
     "sklearn": {"api", "arguments", "chain", "errors", "features", "specs"},
-    "twin": _IO | {"chain", "signals", "specs", "toml_files"},
+    "twin": _IO | {"chain", "signals", "specs", "toml_files", "units"},
     "bench": _BASE
     | _IO
     | {
@@ -77,7 +78,7 @@ ALLOWED: dict[str, set[str]] = {
         "toml_files",
     },
     "verdict": {"bench", "errors", "seeding"},
-    "severity": {"errors", "seeding", "specs", "toml_files", "verdict"},
+    "severity": {"errors", "seeding", "specs", "toml_files", "units", "verdict"},
     "explore": _BASE
     | _IO
     | {
@@ -124,6 +125,7 @@ ALLOWED: dict[str, set[str]] = {
         "signals",
         "specs",
         "twin",
+        "units",
         "validation",
         "verdict",
     },

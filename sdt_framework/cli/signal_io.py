@@ -25,6 +25,8 @@ from numpy.typing import NDArray
 
 from ..errors import SDTError
 from ..io import atomic_path
+from ..units import TO_G
+from ..units import UNITS as ACCELERATION_UNITS
 from .common import err_console
 
 if TYPE_CHECKING:
@@ -43,7 +45,7 @@ __all__ = [
 ]
 
 SUFFIXES = (".npy", ".csv")
-UNITS = ("g", "mg", "m/s^2", "lsb")
+UNITS = (*ACCELERATION_UNITS, "lsb")
 
 
 def _suffix(path: Path) -> str:
@@ -138,8 +140,6 @@ def zero_motion_recording(
 
 def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> NDArray[np.float64]:
     """Convert a recording from ``unit`` (g, mg, m/s^2, or raw LSB times ``scale`` g/LSB) to g."""
-    from ..signals.one_signal import TO_G
-
     if unit in TO_G:
         return x if unit == "g" else x * TO_G[unit]
     if unit == "lsb":

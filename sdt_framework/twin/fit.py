@@ -38,6 +38,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..specs import SensorSpec
+from ..units import TO_G, UNITS
 from . import spectra
 from .align import at_rate
 from .check import CheckResult, check_twin
@@ -50,9 +51,13 @@ __all__ = ["MIN_BANDS", "SCALE_RANGE", "FitResult", "default_name", "fit_twin", 
 MIN_BANDS = 3
 #: a fitted gain (device / twin) outside this range is no part's sensitivity error
 SCALE_RANGE = (0.5, 2.0)
-#: unit mix-ups a gain far from 1 points at: ratio -> what the device's values probably are
-UNIT_RATIOS = {1000.0: "in mg, declared as g", 9.80665: "in m/s^2, declared as g",
-               1e-3: "in g, declared as mg", 1 / 9.80665: "in g, declared as m/s^2"}  # fmt: skip
+#: unit mix-ups a gain far from 1 points at: ratio (device / twin) -> what the device's values
+#: probably are (one unit read as g, or g read as another)
+UNIT_RATIOS = {
+    TO_G[declared] / TO_G[actual]: f"in {actual}, declared as {declared}"
+    for other in UNITS[1:]
+    for actual, declared in ((other, "g"), ("g", other))
+}
 
 
 @dataclass

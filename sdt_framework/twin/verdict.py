@@ -31,6 +31,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..specs import SensorSpec
+from ..units import units_list
 from .signals import unit_mistake
 from .spectra import TONE_FACTOR
 
@@ -190,5 +191,5 @@ def check_reference_scale(factor: float) -> None:
             f"--reference-scale {factor:g}: outside the plausible {lo:g}-{hi:g}; it corrects "
             f"the reference's calibration (the check's 'calibration' line gives the factor, "
             f"e.g. 1.626), which is never off by 20 dB; for other units give the pair "
-            f"file's units (g, mg, m/s^2)"
+            f"file's units ({units_list()})"
         )
