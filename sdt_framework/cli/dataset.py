@@ -82,8 +82,7 @@ def synth(
 
       sdt dataset synth --out data/synthetic --duration 2 --overwrite
     """
-    from ..data import open_dataset, write_nln_emp  # heavy (scipy, pyarrow): on use only
-    from ..data.sizes import synth_cost
+    from ..data import open_dataset, synth_cost, write_nln_emp  # heavy (scipy, pyarrow)
     from .guards import check_cost, check_output_folder, os_errors
 
     if duration is not None and not (math.isfinite(duration) and duration > 0.2):
@@ -171,7 +170,7 @@ def inspect(
       sdt dataset inspect synthetic-pump
     """
     from ..data import open_dataset  # heavy (scipy, pyarrow): on use only
-    from ..signals.files import channel_reader
+    from ..signals import channel_reader
     from .guards import os_errors
 
     recorder = channel_reader(path_or_name, registry(ctx).signal_readers())

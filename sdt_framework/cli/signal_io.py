@@ -112,9 +112,7 @@ def zero_motion_recording(
     rate the file's or --fs or the sensor's output rate; of a file of channels (IDE) the
     ``axis`` of the channel of the sensor's part (or --channel) unless --signal names one."""
     from ..chain import compile_chain
-    from ..signals.channels import axis_variable, part_channel
-    from ..signals.file_sizes import DEGRADE_BYTES_PER_SAMPLE
-    from ..signals.files import channel_reader
+    from ..signals import DEGRADE_BYTES_PER_SAMPLE, axis_variable, channel_reader, part_channel
 
     if unit is not None and unit.lower() not in UNITS:
         raise SDTError(f"--unit {unit!r}: use one of {', '.join(UNITS)}")
@@ -154,8 +152,7 @@ def check_signal_size(path: Path, readers: Sequence[Any], bytes_per_sample: int,
     """Refuse the signal file ``path`` before reading it if its samples (from its header,
     through its reader) at ``bytes_per_sample`` each, plus what its reader's parse takes,
     need more memory than is available."""
-    from ..signals.file_sizes import file_samples
-    from ..signals.files import reader_for
+    from ..signals import file_samples, reader_for
     from .guards import check_memory
 
     samples = file_samples(path, readers)
@@ -170,7 +167,7 @@ def check_pair_size(pair: Path, readers: Sequence[Any]) -> None:
     A TOML pair is sized from its two files' headers, an IDE file from its
     bytes; a pair that cannot be read this way is left to the loader's message.
     """
-    from ..signals.file_sizes import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
+    from ..signals import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
     from .guards import check_memory
 
     advice = "cut the recordings to a shorter stretch (a few minutes hold every band)"

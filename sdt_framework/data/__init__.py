@@ -26,9 +26,11 @@ from ..lazy import lazy_exports
 
 if TYPE_CHECKING:
     from .cache import ArrayCache, default_cache_dir
-    from .manifest import open_manifest
+    from .manifest import REQUIRED, open_manifest
+    from .manifest_build import build_manifest, manifest_csv
     from .open import load_dataset, open_dataset, write_nln_emp
     from .recording import DataFileError, Dataset, Recording, Skipped, measurement_groups
+    from .sizes import synth_cost
 
 #: public name -> the submodule that defines it. Loaded on first use (PEP 562), as
 #: scipy loads its subpackages: a command that opens a manifest does not load
@@ -36,7 +38,10 @@ if TYPE_CHECKING:
 _WHERE = {
     "ArrayCache": "cache",
     "default_cache_dir": "cache",
+    "REQUIRED": "manifest",
     "open_manifest": "manifest",
+    "build_manifest": "manifest_build",
+    "manifest_csv": "manifest_build",
     "load_dataset": "open",
     "open_dataset": "open",
     "write_nln_emp": "open",
@@ -45,19 +50,24 @@ _WHERE = {
     "Recording": "recording",
     "Skipped": "recording",
     "measurement_groups": "recording",
+    "synth_cost": "sizes",
 }
 
 __all__ = [
+    "REQUIRED",
     "ArrayCache",
     "DataFileError",
     "Dataset",
     "Recording",
     "Skipped",
+    "build_manifest",
     "default_cache_dir",
     "load_dataset",
+    "manifest_csv",
     "measurement_groups",
     "open_dataset",
     "open_manifest",
+    "synth_cost",
     "write_nln_emp",
 ]
 

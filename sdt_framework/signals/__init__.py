@@ -40,12 +40,28 @@ from typing import TYPE_CHECKING
 from ..lazy import lazy_exports
 
 if TYPE_CHECKING:
-    from .channels import Channel, ChannelSignal, Subchannel
+    from .channels import Channel, ChannelSignal, Subchannel, axis_variable, part_channel
     from .csv_rule import CsvSignal, read_csv_signal
     from .errors import DataFileError, SignalTypeError
-    from .files import known_formats, read_signal, reader_for, scan_file
+    from .file_sizes import (
+        DEGRADE_BYTES_PER_SAMPLE,
+        FEATURES_BYTES_PER_SAMPLE,
+        TWIN_BYTES_PER_IDE_BYTE,
+        TWIN_BYTES_PER_SAMPLE,
+        file_samples,
+    )
+    from .files import channel_reader, known_formats, read_signal, reader_for, scan_file
     from .one_signal import FileSignal, open_signal
     from .rules import SignalInfo
+    from .sizes import (
+        Cost,
+        available_memory,
+        building,
+        free_disk,
+        human_bytes,
+        human_seconds,
+        memory_cause,
+    )
     from .timebase import EvenSignal, on_even_grid
     from .tokens import brief, quote
 
@@ -55,10 +71,18 @@ _WHERE = {
     "Channel": "channels",
     "ChannelSignal": "channels",
     "Subchannel": "channels",
+    "axis_variable": "channels",
+    "part_channel": "channels",
     "CsvSignal": "csv_rule",
     "read_csv_signal": "csv_rule",
     "DataFileError": "errors",
     "SignalTypeError": "errors",
+    "DEGRADE_BYTES_PER_SAMPLE": "file_sizes",
+    "FEATURES_BYTES_PER_SAMPLE": "file_sizes",
+    "TWIN_BYTES_PER_IDE_BYTE": "file_sizes",
+    "TWIN_BYTES_PER_SAMPLE": "file_sizes",
+    "file_samples": "file_sizes",
+    "channel_reader": "files",
     "known_formats": "files",
     "read_signal": "files",
     "reader_for": "files",
@@ -66,6 +90,13 @@ _WHERE = {
     "FileSignal": "one_signal",
     "open_signal": "one_signal",
     "SignalInfo": "rules",
+    "Cost": "sizes",
+    "available_memory": "sizes",
+    "building": "sizes",
+    "free_disk": "sizes",
+    "human_bytes": "sizes",
+    "human_seconds": "sizes",
+    "memory_cause": "sizes",
     "EvenSignal": "timebase",
     "on_even_grid": "timebase",
     "brief": "tokens",
@@ -73,8 +104,13 @@ _WHERE = {
 }
 
 __all__ = [
+    "DEGRADE_BYTES_PER_SAMPLE",
+    "FEATURES_BYTES_PER_SAMPLE",
+    "TWIN_BYTES_PER_IDE_BYTE",
+    "TWIN_BYTES_PER_SAMPLE",
     "Channel",
     "ChannelSignal",
+    "Cost",
     "CsvSignal",
     "DataFileError",
     "EvenSignal",
@@ -82,10 +118,20 @@ __all__ = [
     "SignalInfo",
     "SignalTypeError",
     "Subchannel",
+    "available_memory",
+    "axis_variable",
     "brief",
+    "building",
+    "channel_reader",
+    "file_samples",
+    "free_disk",
+    "human_bytes",
+    "human_seconds",
     "known_formats",
+    "memory_cause",
     "on_even_grid",
     "open_signal",
+    "part_channel",
     "quote",
     "read_csv_signal",
     "read_signal",
