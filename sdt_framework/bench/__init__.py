@@ -20,6 +20,9 @@ build_table4(results, sensor_order) -> Table4 ; table4_markdown(table) ; tidy(ru
     Table 4 of a results table; the tidy tables of runs.
 OUTPUT_FILES
     Every file a benchmark writes at the top of its folder.
+ASSUMES ; pool_note ; saturation_summary, saturation_lines ; watch_interrupts ; write_frame
+    What the command line prints around a run: what the estimate assumes, the process
+    pool, the samples at full scale; the interrupt (Ctrl-C, SIGTERM) watch; a table written.
 
 Names load on first use, so ``sdt --help`` does not import pandas or scikit-learn.
 """

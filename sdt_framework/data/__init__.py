@@ -11,8 +11,10 @@ open_manifest
     The manifest reader (registered as the plugin ``manifest``); the NLN-EMP
     reader and the synthetic pump's generator are their plugins' own packages
     (``plugins/datasets/nln_emp/``, ``plugins/datasets/synthetic_pump/``).
-write_nln_emp
-    Write any dataset in the NLN-EMP CSV layout.
+write_nln_emp ; synth_cost
+    Write any dataset in the NLN-EMP CSV layout; what writing the synthetic one costs.
+REQUIRED ; build_manifest, manifest_csv
+    A manifest's required columns; a manifest built from a folder of signal files.
 
 Signal files themselves (the readers' kit, one signal of one file) are a layer
 below: :mod:`sdt_framework.signals`.

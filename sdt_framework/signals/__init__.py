@@ -28,9 +28,13 @@ on_even_grid, EvenSignal
 quote, brief
     A piece of a user's file in a message, never a whole line (:mod:`.tokens`).
 
-Sizes: :mod:`.sizes` (what the machine has, :class:`~.sizes.Cost`) and
-:mod:`.file_sizes` (a signal file's samples from its header, the measured
-bytes per sample of each command).
+channel_reader, part_channel, axis_variable
+    The reader of a file of channels, the channel of a part, an axis's signal name (``32:x``).
+Cost, available_memory, free_disk, building, human_bytes, human_seconds, memory_cause
+    What the machine has and what a command costs (:mod:`.sizes`).
+file_samples, DEGRADE_BYTES_PER_SAMPLE, FEATURES_BYTES_PER_SAMPLE, TWIN_BYTES_PER_SAMPLE, ...
+    A signal file's samples from its header, the measured bytes per sample of each
+    command (:mod:`.file_sizes`).
 """
 
 from __future__ import annotations
