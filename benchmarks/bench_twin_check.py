@@ -81,11 +81,11 @@ def main() -> None:
           f"{len(bands)} third-octave bands, one core")  # fmt: skip
     print(f"{'band':>9} {'axis':>4} {'real (ours)':>12} {'real (bank)':>12} "
           f"{'twin (ours)':>12} {'twin (bank)':>12}")  # fmt: skip
-    for row in (b for b in result.bands if b["judgeable"]):
-        i, k = axes[row["axis"]], centres.index(round(row["f_centre_hz"], 3))
-        ours = f"{row['real_rms_g']:>12.4g} {plain[0][i, k]:>12.4g}"
-        bank = f"{row['twin_rms_g']:>12.4g} {plain[1][i, k]:>12.4g}"
-        print(f"{row['f_centre_hz']:>7.0f}Hz {row['axis']:>4} {ours} {bank}")
+    for row in (b for b in result.bands if b.judgeable):
+        i, k = axes[row.axis], centres.index(round(row.f_centre_hz, 3))
+        ours = f"{row.real_rms_g:>12.4g} {plain[0][i, k]:>12.4g}"
+        bank = f"{row.twin_rms_g:>12.4g} {plain[1][i, k]:>12.4g}"
+        print(f"{row.f_centre_hz:>7.0f}Hz {row.axis:>4} {ours} {bank}")
     bands_ours = t_check - t_align
     print(f"read the pair (idelib, 2 channels): {t_load:.2f} s")
     print(

@@ -13,8 +13,8 @@ import numpy as np
 from sdt_framework import FeatureSetSpec, hookimpl
 from sdt_framework.hookspecs import Register
 from sdt_framework.specs import FeatureBand
+from sdt_framework.units import G_N
 
-G = 9.80665  # m/s^2 per g
 BAND_ACC_LOW_HZ = 10.0
 BAND_KIN_HZ = (10.0, 1000.0)
 
@@ -74,7 +74,7 @@ def compute(windows: np.ndarray, fs: float) -> np.ndarray:
 
     kin = (f_band >= BAND_KIN_HZ[0]) & (f_band <= BAND_KIN_HZ[1])
     omega2 = (2 * np.pi * f_band[kin]) ** 2
-    a_kin = a_sq[:, kin] * G**2  # (m/s^2)^2
+    a_kin = a_sq[:, kin] * G_N**2  # (m/s^2)^2
     v_rms = np.sqrt(a_kin @ (1.0 / omega2) / 2) * 1e3
     d_rms = np.sqrt(a_kin @ (1.0 / omega2**2) / 2) * 1e6
 

@@ -20,9 +20,9 @@ from pydantic import BaseModel, ConfigDict, Field
 from sdt_framework import hookimpl
 from sdt_framework.chain import SameRate
 from sdt_framework.stages import StageContext, StageSpec, row_normals
+from sdt_framework.units import G_N
 
 Batch = NDArray[np.float64]
-G = 9.80665  # standard gravity, m/s^2
 
 
 class GaussMarkovParams(BaseModel):
@@ -128,7 +128,7 @@ def _walk(params: RandomWalkParams, context: StageContext) -> Additive:
 
 
 def _vrw(params: VrwParams, context: StageContext) -> Additive:
-    n_g_rts = params.vrw_mps_rthr / 60.0 / G  # (m/s)/sqrt(h) -> g sqrt(s): ADEV at 1 s
+    n_g_rts = params.vrw_mps_rthr / 60.0 / G_N  # (m/s)/sqrt(h) -> g sqrt(s): ADEV at 1 s
     return Additive(context.label, context.fs, "white", n_g_rts * np.sqrt(context.fs))
 
 

@@ -20,6 +20,9 @@ build_table4(results, sensor_order) -> Table4 ; table4_markdown(table) ; tidy(ru
     Table 4 of a results table; the tidy tables of runs.
 OUTPUT_FILES
     Every file a benchmark writes at the top of its folder.
+ASSUMES ; pool_note ; saturation_summary, saturation_lines ; watch_interrupts ; write_frame
+    What the command line prints around a run: what the estimate assumes, the process
+    pool, the samples at full scale; the interrupt (Ctrl-C, SIGTERM) watch; a table written.
 
 Names load on first use, so ``sdt --help`` does not import pandas or scikit-learn.
 """
@@ -32,13 +35,16 @@ from ..lazy import lazy_exports
 
 if TYPE_CHECKING:
     from .config import BenchmarkConfig, load_config, quick_preset
-    from .estimate import Estimate
+    from .estimate import ASSUMES, Estimate
     from .folder import OUTPUT_FILES
+    from .interrupt import watch_interrupts
     from .job import BENCHMARK, FolderRun, Wording, run_benchmark_folder, run_plan_folder
     from .output import write_outputs
     from .plan import Plan, plan_benchmark
-    from .results import tidy
+    from .pool import pool_note
+    from .results import tidy, write_frame
     from .runner import BenchmarkResult, run_benchmark
+    from .saturation import saturation_lines, saturation_summary
     from .size_check import check_estimate, check_size, stored_runs
     from .table4 import Table4, build_table4, table4_markdown
 
@@ -47,8 +53,10 @@ _WHERE = {
     "BenchmarkConfig": "config",
     "load_config": "config",
     "quick_preset": "config",
+    "ASSUMES": "estimate",
     "Estimate": "estimate",
     "OUTPUT_FILES": "folder",
+    "watch_interrupts": "interrupt",
     "BENCHMARK": "job",
     "FolderRun": "job",
     "Wording": "job",
@@ -57,9 +65,13 @@ _WHERE = {
     "write_outputs": "output",
     "Plan": "plan",
     "plan_benchmark": "plan",
+    "pool_note": "pool",
     "tidy": "results",
+    "write_frame": "results",
     "BenchmarkResult": "runner",
     "run_benchmark": "runner",
+    "saturation_lines": "saturation",
+    "saturation_summary": "saturation",
     "check_estimate": "size_check",
     "check_size": "size_check",
     "stored_runs": "size_check",
@@ -68,6 +80,7 @@ _WHERE = {
     "table4_markdown": "table4",
 }
 __all__ = [
+    "ASSUMES",
     "BENCHMARK",
     "OUTPUT_FILES",
     "BenchmarkConfig",
@@ -82,13 +95,18 @@ __all__ = [
     "check_size",
     "load_config",
     "plan_benchmark",
+    "pool_note",
     "quick_preset",
     "run_benchmark",
     "run_benchmark_folder",
     "run_plan_folder",
+    "saturation_lines",
+    "saturation_summary",
     "stored_runs",
     "table4_markdown",
     "tidy",
+    "watch_interrupts",
+    "write_frame",
     "write_outputs",
 ]
 

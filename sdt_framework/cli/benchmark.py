@@ -173,8 +173,7 @@ def benchmark(
       sdt benchmark --quick --transfer "wilcoxon-786b10 -> adxl345,adxl357"
     """
     # Imported here so that `sdt --help` and the listing commands start fast.
-    from ..bench.config import load_config
-    from ..bench.interrupt import watch_interrupts
+    from ..bench import load_config, watch_interrupts
 
     given: dict[str, Any] = {
         "data": data,
@@ -225,9 +224,7 @@ def _run(ctx: typer.Context, config: Any, out_dir: Path, yes: bool, claimed: lis
     The results folder stays locked from its claim until the outputs and the report are
     written (:mod:`~sdt_framework.bench.folder_lock`).
     """
-    from ..bench import run_benchmark_folder
-    from ..bench.estimate import ASSUMES
-    from ..bench.saturation import saturation_lines, saturation_summary
+    from ..bench import ASSUMES, run_benchmark_folder, saturation_lines, saturation_summary
     from .benchmark_notes import start_lines
     from .planned import print_skipped
     from .progress import Bars

@@ -15,11 +15,10 @@ from __future__ import annotations
 import shlex
 from typing import TYPE_CHECKING
 
-from ..bench.pool import pool_note
+from ..bench import pool_note
 
 if TYPE_CHECKING:
-    from ..bench.estimate import Estimate
-    from ..bench.plan import Plan
+    from ..bench import Estimate, Plan
 
 __all__ = ["start_lines"]
 

@@ -13,7 +13,7 @@ __all__ = ["print_table4"]
 
 def print_table4(results: Any, sensor_order: list[str]) -> None:
     """Table 4 in the terminal: one table per machine, scenario blocks, mean over ± SD."""
-    from ..bench.table4 import build_table4
+    from ..bench import build_table4
 
     table = build_table4(results, sensor_order)
     if table.empty:

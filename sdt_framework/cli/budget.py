@@ -129,10 +129,15 @@ def budget(
 
       sdt budget --sensor adxl345 --battery 2xAA --interval 10min
     """
-    from ..edge import DEFAULT_RADIO, edge_budget, parse_interval
+    from ..edge import (
+        DEFAULT_RADIO,
+        NODE_RADIO,
+        budget_rows,
+        budget_summary,
+        edge_budget,
+        parse_interval,
+    )
     from ..edge import radio as radio_named
-    from ..edge.energy import NODE_RADIO
-    from ..edge.table import budget_rows, budget_summary
     from ..features import resolve_feature_set
     from .budget_node import NodeOptions, print_node_budget, refuse_without_sensor
 

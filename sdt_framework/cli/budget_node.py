@@ -59,7 +59,7 @@ def _positive(flag: str, value: float, unit: str) -> None:
 
 
 def _cell(opts: NodeOptions):
-    from ..edge.cells import Cell, cell
+    from ..edge import Cell, cell
 
     own = {
         "--cell-voltage": opts.cell_voltage,
@@ -96,7 +96,7 @@ def _cell(opts: NodeOptions):
 
 def _sensor(spec, opts: NodeOptions):
     """The sensor with the user's own supply figures in place of (or beside) its sourced ones."""
-    from ..specs.supply import Supply, SupplyFigure
+    from ..specs import Supply, SupplyFigure
 
     given = {
         "measure_ua": opts.sensor_current_ua,
@@ -117,8 +117,7 @@ def _sensor(spec, opts: NodeOptions):
 
 
 def _settings(opts: NodeOptions, *, axes, seconds, region, radio, repeater):
-    from ..edge import parse_interval
-    from ..edge.node import NodeSettings
+    from ..edge import NodeSettings, parse_interval
 
     window = 0.64 if opts.window is None else parse_interval(opts.window, "--window")
     settings = NodeSettings(
@@ -146,8 +145,7 @@ def _settings(opts: NodeOptions, *, axes, seconds, region, radio, repeater):
 def print_node_budget(reg, feature_set, sensor_name: str, *, axes, seconds, region, radio,
                       repeater, opts: NodeOptions, as_json: bool) -> None:  # fmt: skip
     """Resolve the sensor and cell, run the node model, print the table (or JSON)."""
-    from ..edge.node import node_budget
-    from ..edge.node_table import node_rows, node_sources, node_summary
+    from ..edge import node_budget, node_rows, node_sources, node_summary
 
     for f in fields(opts):
         if f.name.endswith(("_ua", "_ma", "_ms")):

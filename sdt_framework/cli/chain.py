@@ -67,7 +67,7 @@ def degrade_command(
         --out ide_adxl345.npy   # the rate from the file's timestamps
     """
     from ..chain import degrade  # scipy.signal: imported on use so `sdt --help` starts fast
-    from ..signals.file_sizes import DEGRADE_BYTES_PER_SAMPLE
+    from ..signals import DEGRADE_BYTES_PER_SAMPLE
     from .guards import check_output_file, os_errors
     from .signal_io import SUFFIXES, open_input, save_array
 
@@ -216,12 +216,15 @@ def validate_noise_command(
 
       sdt validate-noise --sensor adxl345 --recording tests/data/endaq/SSX_Data.IDE --windows 4
     """
-    from ..signals.sizes import Cost
-    from ..validation import noise_check, plot_noise_check  # imported on use, as in degrade
-    from ..validation.allan import allan_seconds
-    from ..validation.allan_check import allan_check
-    from ..validation.noise_check import zero_motion_cost
-    from ..validation.noise_plot import plot_formats
+    from ..signals import Cost
+    from ..validation import (  # imported on use, as in degrade
+        allan_check,
+        allan_seconds,
+        noise_check,
+        plot_formats,
+        plot_noise_check,
+        zero_motion_cost,
+    )
     from .allan_table import print_allan_table
     from .guards import check_cost, check_output_file, os_errors
     from .signal_io import zero_motion_recording

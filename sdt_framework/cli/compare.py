@@ -198,8 +198,8 @@ def compare(
 
       sdt compare results/first-look --zones Motor-4=iso10816-3-group2-flexible
     """
-    from ..bench.results import write_frame
-    from ..report.load import load_results
+    from ..bench import write_frame
+    from ..report import load_results
     from ..verdict import compare as run_compare
     from ..verdict import pair_folders, verdict
     from .compare_severity import check_zones, print_severity, severity_agreement, severity_json

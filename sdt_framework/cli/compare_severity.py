@@ -26,7 +26,7 @@ def severity_agreement(
     None and the reason when it cannot be computed (no features, no table, no
     windows of ``reference``); a bad ``--zones`` value is an error.
     """
-    from ..report.machines import folder_machines, no_spec_line
+    from ..report import folder_machines, no_spec_line
     from ..severity import assign_tables, sensor_bandwidths, zone_agreement
 
     features = folder.features
@@ -69,7 +69,7 @@ def _band(agreement: Any, sensor: str) -> str:
 def print_severity(agreement: Any) -> None:
     """Per machine and sensor, pooled over channels: zone and alarm agreement; then the zone
     per condition, the tables used and a warning per sensor whose V_RMS band is clipped."""
-    from ..report.severity_tables import condition_cells
+    from ..report import condition_cells
 
     zones, alarms = agreement.zones, agreement.alarms
     pooled = zones["channel"] == "all"

@@ -91,8 +91,7 @@ def synth(
 
       sdt dataset synth --out data/speeds --speeds 50,75,100 --duration 2
     """
-    from ..data import open_dataset, write_nln_emp  # heavy (scipy, pyarrow): on use only
-    from ..data.sizes import synth_cost
+    from ..data import open_dataset, synth_cost, write_nln_emp  # heavy (scipy, pyarrow)
     from .guards import check_cost, check_output_folder, os_errors
 
     if duration is not None and not (math.isfinite(duration) and duration > 0.2):
@@ -202,7 +201,7 @@ def inspect(
 
       sdt dataset inspect synthetic-pump --estimate-speed   # its machines give the nominal speed
     """
-    from ..signals.files import channel_reader
+    from ..signals import channel_reader
 
     recorder = channel_reader(path_or_name, registry(ctx).signal_readers())
     if recorder is not None:  # a file of channels (IDE)

@@ -47,7 +47,7 @@ def cell(value: object) -> str:
 def is_manifest_csv(path: Path) -> bool:
     """Whether the .csv at ``path`` is a manifest: its first line names one of the manifest's
     required columns (``path``, ``condition``...) or is empty; else it is a signal file."""
-    from ..data.manifest import REQUIRED
+    from ..data import REQUIRED
 
     try:
         with open(path, "rb") as handle:
@@ -62,7 +62,7 @@ def is_manifest_csv(path: Path) -> bool:
 
 def inspect_file(ctx: typer.Context, path: str, as_json: bool) -> None:
     """Every signal of one file: variable, rate and where it comes from, units, duration."""
-    from ..signals.files import scan_file
+    from ..signals import scan_file
     from .guards import os_errors
 
     with os_errors(path):
@@ -140,7 +140,7 @@ def manifest(
 
       sdt benchmark --quick --data campaign.csv
     """
-    from ..data.manifest_build import build_manifest, manifest_csv
+    from ..data import build_manifest, manifest_csv
     from .guards import check_output_file, os_errors
 
     check_output_file(out, "--out", (".csv",), overwrite=overwrite)

@@ -109,8 +109,10 @@ def open_inspected(
 ) -> Any:
     """The dataset ``inspect`` shows: opened at ``speeds`` (the dataset's ``speeds``
     option), validated, its speeds estimated where none is carried, as asked."""
-    from ..data import open_dataset  # heavy (scipy, pyarrow): on use only
-    from ..data.speed import estimate_speeds
+    from ..data import (
+        estimate_speeds,
+        open_dataset,  # heavy (scipy, pyarrow): on use only
+    )
     from .guards import os_errors
 
     if nominal_rpm is not None and not (math.isfinite(nominal_rpm) and nominal_rpm > 0):

@@ -15,8 +15,7 @@ from .common import console, err_console, registry
 from .explore_tables import print_tables
 
 if TYPE_CHECKING:
-    from ..bench.estimate import Estimate
-    from ..bench.plan import Plan
+    from ..bench import Estimate, Plan
     from ..specs import SensorSpec
 
 
@@ -77,10 +76,10 @@ def explore(
         return
     if sweep_file is None:
         raise typer.BadParameter("give a sweep file, or --example to print one", param_hint="SWEEP")
-    from ..bench.interrupt import watch_interrupts
-    from ..explore.sweep_file import load_sweep
+    from ..bench import watch_interrupts
+    from ..explore import load_sweep
     from ..inputs import require_regular_file
-    from ..signals.sizes import building
+    from ..signals import building
 
     if strategy not in STRATEGIES:
         from ..errors import SDTError
@@ -128,10 +127,7 @@ def _run(
 ) -> dict[str, Any]:
     """Plan the sweep, estimate both strategies, check the folder, run the chosen one, report."""
     from ..bench import check_estimate, stored_runs
-    from ..bench.estimate import estimate
-    from ..explore.adaptive import screen_of
-    from ..explore.run import plan_explore
-    from ..explore.size import run_estimate, sweep_estimate
+    from ..explore import exhaustive_estimate, plan_explore, screen_of, sweep_estimate
     from .explore_run import adaptive
     from .explore_run import exhaustive as run_exhaustive
     from .planned import print_skipped
@@ -158,11 +154,11 @@ def _run(
     explore_plan = plan_explore(sweep, protocol, overrides, reg, where=where, check=check_design)
     plan = explore_plan.plan
     report = plan.config.report and not no_report
-    exhaustive = run_estimate(plan, estimate(plan, stored_runs=stored), report)
+    exhaustive = exhaustive_estimate(plan, report, stored_runs=stored)
     chosen, size = _choose(explore_plan, reg, strategy, exhaustive, report)
     check_estimate(size, out_dir, yes, f"{chosen} sweep", REDUCE, verb="run")
     if chosen == "adaptive":
-        from ..explore.adaptive import Adaptive
+        from ..explore import Adaptive
 
         Adaptive(explore_plan, reg, out_dir).check_folder()  # before anything is written
     for row in explore_plan.skipped.itertuples():
@@ -188,7 +184,7 @@ def _choose(
 ) -> tuple[str, Estimate]:
     """Print both strategies' estimates and which one runs (and why); return it and its size."""
     from ..errors import SDTError
-    from ..explore.adaptive import estimates, not_adaptive
+    from ..explore import estimates, not_adaptive
 
     reason = not_adaptive(explore_plan)
     if reason is not None and strategy == "adaptive":

@@ -8,15 +8,15 @@ from typing import TYPE_CHECKING, Any
 from .common import console, warn
 
 if TYPE_CHECKING:
-    from ..bench.estimate import Estimate
+    from ..bench import Estimate
 
 __all__ = ["adaptive", "exhaustive"]
 
 
 def adaptive(explore_plan: Any, reg: Any, out_dir: Path, report: bool) -> dict[str, Any]:
     """Screen every point, refine along the lines through the base, report the last round."""
-    from ..explore.adaptive import Adaptive
-    from ..signals.sizes import building
+    from ..explore import Adaptive
+    from ..signals import building
     from .progress import progress_bar
 
     smaller = "use fewer points, repeats or classifiers, shorter or fewer recordings"
@@ -51,10 +51,8 @@ def exhaustive(
 ) -> dict[str, Any]:
     """Every point through the full protocol in one benchmark folder."""
     from ..bench import Wording, run_plan_folder
-    from ..explore.output import write_explore
-    from ..explore.run import explore_table
-    from ..explore.size import assumptions
-    from ..signals.sizes import building
+    from ..explore import assumptions, explore_table, write_explore
+    from ..signals import building
     from .progress import Bars
 
     tables: dict[str, Any] = {}

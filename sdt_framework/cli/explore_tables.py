@@ -113,7 +113,7 @@ def _print_battery_life(pareto: Any, fields: list[str], target: Any) -> None:
 
 def _print_life_front(pareto: Any, target: Any) -> None:
     """Each point's cost, battery life and Macro F1, and the cells where it is on the front."""
-    from ..explore.output import life_front
+    from ..explore import life_front
 
     front = life_front(pareto)
     if front.empty:

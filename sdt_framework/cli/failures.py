@@ -88,7 +88,7 @@ def memory_error_line(exc: MemoryError) -> str:
     was entered (the sweep design, its points, the benchmark's features); a
     MemoryError from elsewhere blames no particular input.
     """
-    from ..signals.sizes import memory_cause
+    from ..signals import memory_cause
 
     detail = one_line(exc, 200) or "MemoryError"
     cause = memory_cause(exc)

@@ -110,7 +110,7 @@ def extract_features(
       sdt features extract tests/data/endaq/SSX_Data.IDE --signal 8:x --out ide_features.csv
     """
     from ..features import extract, resolve_feature_set, write_feature_table
-    from ..signals.file_sizes import FEATURES_BYTES_PER_SAMPLE
+    from ..signals import FEATURES_BYTES_PER_SAMPLE
     from .guards import check_output_file, os_errors
     from .signal_io import open_input
 

@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING
 from ..errors import SDTError
 
 if TYPE_CHECKING:
-    from ..signals.sizes import Cost
+    from ..signals import Cost
 
 __all__ = [
     "DISK_SHARE",
@@ -183,7 +183,7 @@ def check_cost(what: str, cost: Cost, yes: bool, reduce: str, folder: Path | Non
     ``reduce`` says which options make it smaller; ``folder`` is where its disk
     output goes.
     """
-    from ..signals.sizes import available_memory, free_disk, human_bytes, human_seconds
+    from ..signals import available_memory, free_disk, human_bytes, human_seconds
 
     memory, disk, seconds, samples = cost.memory_bytes, cost.disk_bytes, cost.seconds, cost.samples
     room = available_memory()
@@ -212,7 +212,7 @@ def check_memory(path: Path, size: str, memory: int, advice: str) -> None:
     """Refuse ``path`` before reading it when its ``size`` ("N samples") needs more
     ``memory`` (bytes) than is available now (memory, cgroup and ``ulimit -v`` limits);
     ``advice`` says what to do instead."""
-    from ..signals.sizes import available_memory, human_bytes
+    from ..signals import available_memory, human_bytes
 
     room = available_memory()
     if memory > room:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from .common import err_console, shorten_labels
 
 if TYPE_CHECKING:
-    from ..bench.plan import Plan
+    from ..bench import Plan
 
 __all__ = ["print_skipped"]
 

@@ -25,6 +25,8 @@ from numpy.typing import NDArray
 
 from ..errors import SDTError
 from ..io import atomic_path
+from ..units import TO_G
+from ..units import UNITS as ACCELERATION_UNITS
 from .common import err_console
 
 if TYPE_CHECKING:
@@ -43,7 +45,7 @@ __all__ = [
 ]
 
 SUFFIXES = (".npy", ".csv")
-UNITS = ("g", "mg", "m/s^2", "lsb")
+UNITS = (*ACCELERATION_UNITS, "lsb")
 
 
 def _suffix(path: Path) -> str:
@@ -110,9 +112,7 @@ def zero_motion_recording(
     rate the file's or --fs or the sensor's output rate; of a file of channels (IDE) the
     ``axis`` of the channel of the sensor's part (or --channel) unless --signal names one."""
     from ..chain import compile_chain
-    from ..signals.channels import axis_variable, part_channel
-    from ..signals.file_sizes import DEGRADE_BYTES_PER_SAMPLE
-    from ..signals.files import channel_reader
+    from ..signals import DEGRADE_BYTES_PER_SAMPLE, axis_variable, channel_reader, part_channel
 
     if unit is not None and unit.lower() not in UNITS:
         raise SDTError(f"--unit {unit!r}: use one of {', '.join(UNITS)}")
@@ -138,8 +138,6 @@ def zero_motion_recording(
 
 def to_g(x: NDArray[np.float64], unit: str, scale: float | None, label: str) -> NDArray[np.float64]:
     """Convert a recording from ``unit`` (g, mg, m/s^2, or raw LSB times ``scale`` g/LSB) to g."""
-    from ..signals.one_signal import TO_G
-
     if unit in TO_G:
         return x if unit == "g" else x * TO_G[unit]
     if unit == "lsb":
@@ -154,8 +152,7 @@ def check_signal_size(path: Path, readers: Sequence[Any], bytes_per_sample: int,
     """Refuse the signal file ``path`` before reading it if its samples (from its header,
     through its reader) at ``bytes_per_sample`` each, plus what its reader's parse takes,
     need more memory than is available."""
-    from ..signals.file_sizes import file_samples
-    from ..signals.files import reader_for
+    from ..signals import file_samples, reader_for
     from .guards import check_memory
 
     samples = file_samples(path, readers)
@@ -170,7 +167,7 @@ def check_pair_size(pair: Path, readers: Sequence[Any]) -> None:
     A TOML pair is sized from its two files' headers, an IDE file from its
     bytes; a pair that cannot be read this way is left to the loader's message.
     """
-    from ..signals.file_sizes import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
+    from ..signals import TWIN_BYTES_PER_IDE_BYTE, TWIN_BYTES_PER_SAMPLE, file_samples
     from .guards import check_memory
 
     advice = "cut the recordings to a shorter stretch (a few minutes hold every band)"

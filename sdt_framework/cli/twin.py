@@ -2,18 +2,14 @@
 
 from __future__ import annotations
 
-import math
+from functools import partial
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import typer
 
 from ..errors import SDTError
 from .common import console, print_json, registry, table
 from .guards import OVERWRITE_HELP, os_errors
-
-if TYPE_CHECKING:
-    from ..specs import SensorSpec
 
 app = typer.Typer(help="The twin against real hardware: check and fit.", no_args_is_help=True)
 
@@ -25,11 +21,7 @@ _REFERENCE = typer.Option(None, "--reference-channel", help="Channel id of the r
 
 def _load(ctx: typer.Context, pair: Path, sensor: str, axes: str | None, device: int | None,
           reference: int | None, reference_scale: float = 1.0):  # fmt: skip
-    from dataclasses import replace
-
-    from ..twin import load_pair
-    from ..twin.align import require_rate
-    from ..twin.check import check_reference_scale
+    from ..twin import check_reference_scale, load_pair, require_rate, scaled_reference
 
     check_reference_scale(reference_scale)
     spec = registry(ctx).sensor(sensor)
@@ -39,13 +31,7 @@ def _load(ctx: typer.Context, pair: Path, sensor: str, axes: str | None, device:
         loaded = load_pair(pair, spec.name, axes=chosen, device_channel=device,
                            readers=registry(ctx).signal_readers(),
                            reference_channel=reference)  # fmt: skip
-    if reference_scale != 1.0:
-        ref = loaded.reference
-        note = f"reference values multiplied by {reference_scale:g} (--reference-scale)"
-        note = "; ".join(filter(None, (ref.note, note)))
-        scaled = replace(ref, values=ref.values * reference_scale, note=note)
-        loaded = replace(loaded, reference=scaled)
-    return loaded, spec
+    return scaled_reference(loaded, reference_scale), spec
 
 
 def _say(line: str) -> None:
@@ -93,10 +79,8 @@ def check(
       sdt --sensor-file adxl345-fitted.toml twin check tests/data/endaq/SSX66115.IDE \\
         --sensor adxl345-fitted --json
     """
-    from ..twin import check_twin
-    from ..twin.clipping import describe
-    from ..twin.plot import plot_check
-    from ..validation.noise_plot import plot_formats
+    from ..twin import check_twin, describe, plot_check
+    from ..validation import plot_formats
     from .guards import check_output_file
     from .signal_io import check_pair_size
 
@@ -114,54 +98,48 @@ def check(
         print_json(result.as_dict())
         return
     p, a, s = result.pair, result.alignment, result.summary
-    fitted_here = "; IN-SAMPLE: this twin was fitted on this file" if p["in_sample"] else ""
-    _say(f"{p['file']}: reference {p['reference']['channel']} ({p['reference']['part']}, "
-         f"{p['reference']['rate_hz']:.1f} Hz) -> twin of {spec.name} vs device "
-         f"{p['device']['channel']} ({p['device']['part']}), {p['overlap_s']:.1f} s overlap"
+    fitted_here = "; IN-SAMPLE: this twin was fitted on this file" if p.in_sample else ""
+    _say(f"{p.file}: reference {p.reference.channel} ({p.reference.part}, "
+         f"{p.reference.rate_hz:.1f} Hz) -> twin of {spec.name} vs device "
+         f"{p.device.channel} ({p.device.part}), {p.overlap_s:.1f} s overlap"
          f"{fitted_here}")  # fmt: skip
-    for note in dict.fromkeys(p["notes"]):  # both channels of one file may carry its note
+    for note in dict.fromkeys(p.notes):  # both channels of one file may carry its note
         _say(f"note: {note}")
-    angles = ", ".join(f"{x} {d:.2f} deg" for x, d in zip(loaded.device.axes, a["angles_deg"],
+    angles = ", ".join(f"{x} {d:.2f} deg" for x, d in zip(loaded.device.axes, a.angles_deg,
                                                           strict=True))  # fmt: skip
-    mounting = f"signs {a['signs']}, axis angles {angles}" if a["rotation_estimated"] else (
-        f"axes kept as mounted (device and twin correlate {a['correlation']:.2f}: no shared "
+    mounting = f"signs {list(a.signs)}, axis angles {angles}" if a.rotation_estimated else (
+        f"axes kept as mounted (device and twin correlate {a.correlation:.2f}: no shared "
         f"motion to align on)")  # fmt: skip
-    _say(f"alignment: device rate {a['rate_hz']:.2f} Hz ({_from_setting(a['rate_hz'], p)}), "
-         f"delay {1e3 * a['delay_s']:+.3f} ms, {mounting}")  # fmt: skip
+    setting = result.rate_setting or f"nominal {p.device.nominal_rate_hz}"
+    _say(f"alignment: device rate {a.rate_hz:.2f} Hz ({setting}), "
+         f"delay {1e3 * a.delay_s:+.3f} ms, {mounting}")  # fmt: skip
     rows = [
-        [b["axis"], f"{b['f_lower_hz']:.0f}-{b['f_upper_hz']:.0f}", f"{b['real_rms_g']:.4g}",
-         f"{b['twin_rms_g']:.4g}", f"{b['error_db']:+.1f}",
-         f"{b['transfer']['coherence']:.3f}" if b["transfer"] else "-",
-         "yes" if b["judgeable"] else f"no: {b['reason']}"]
-        for b in result.bands if b["judgeable"] or all_bands
+        [b.axis, f"{b.f_lower_hz:.0f}-{b.f_upper_hz:.0f}", f"{b.real_rms_g:.4g}",
+         f"{b.twin_rms_g:.4g}", f"{b.error_db:+.1f}",
+         f"{b.transfer.coherence:.3f}" if b.transfer else "-",
+         "yes" if b.judgeable else f"no: {b.reason}"]
+        for b in result.bands if b.judgeable or all_bands
     ]  # fmt: skip
     table("third-octave bands (g RMS)", ["axis", "band Hz", "real", "twin", "error dB",
                                           "coherence", "judgeable"], rows)  # fmt: skip
     floors = [
-        [
-            f["axis"],
-            f"{f['reference_ug']:.0f}",
-            f"{f['twin_ug']:.0f}",
-            f"{f['device_ug']:.0f}",
-            f"{f['twin_error_db']:+.1f}",
-            "yes" if f["judgeable"] else f"no: {f['reason']}",
-        ]
+        [f.axis, f"{f.reference_ug:.0f}", f"{f.twin_ug:.0f}", f"{f.device_ug:.0f}",
+         f"{f.twin_error_db:+.1f}", "yes" if f.judgeable else f"no: {f.reason}"]
         for f in result.floors
-    ]
+    ]  # fmt: skip
     table("noise floor (ug/sqrt(Hz), median away from tones)",
           ["axis", "reference", "twin", "device", "twin error dB", "judgeable"],
           floors)  # fmt: skip
     d, c = result.distortion, result.clipped
-    _say(f"THD of the {d['tone_hz']:.1f} Hz tone on {d['axis']}: reference {d['reference']:.2%}, "
-         f"twin {d['twin']:.2%}, device {d['device']:.2%}; samples at full scale: device "
-         f"{describe(c['device_clipping'])}, twin {describe(c['twin_clipping'])}")  # fmt: skip
+    _say(f"THD of the {d.tone_hz:.1f} Hz tone on {d.axis}: reference {d.reference:.2%}, "
+         f"twin {d.twin:.2%}, device {d.device:.2%}; samples at full scale: device "
+         f"{describe(c.device_clipping)}, twin {describe(c.twin_clipping)}")  # fmt: skip
     k = result.calibration
-    gain = f"; device/twin gain {k['tone_gain']:.3f} at {k['tone_hz']:.1f} Hz" if k["tone_gain"] \
-        else ""  # fmt: skip
-    _say(f"calibration: the device's mean vector is {k['static_g']:.3f} g{gain}: {k['verdict']}")
-    _say(f"summary: {s['judgeable_bands']} judgeable bands; worst {s['worst_error_db']:+.1f} dB "
-         f"({s['worst_axis']}, {s['worst_band_hz']:.0f} Hz band); RMS error "
-         f"{s['rms_error_db']:.1f} dB" + (" (in-sample)" if p["in_sample"] else ""))  # fmt: skip
+    gain = f"; device/twin gain {k.tone_gain:.3f} at {k.tone_hz:.1f} Hz" if k.tone_gain else ""
+    _say(f"calibration: the device's mean vector is {k.static_g:.3f} g{gain}: {k.verdict}")
+    _say(f"summary: {s.judgeable_bands} judgeable bands; worst {s.worst_error_db:+.1f} dB "
+         f"({s.worst_axis}, {s.worst_band_hz:.0f} Hz band); RMS error "
+         f"{s.rms_error_db:.1f} dB" + (" (in-sample)" if p.in_sample else ""))  # fmt: skip
     if plot is not None:
         _say(f"figure: {plot}")
 
@@ -195,11 +173,11 @@ def fit(
         --sensor adxl345-fitted
     """
     from ..io import atomic_write_text
-    from ..twin.fit import fit_twin, profile_toml
+    from ..twin import fit_twin, profile_name, profile_toml
     from .guards import check_output_file
 
     check_output_file(out, "--out", [".toml"], [pair], overwrite=overwrite)  # before work
-    name = _profile_name(ctx, name, registry(ctx).sensor(sensor))
+    name = profile_name(name, registry(ctx).sensor(sensor), partial(_known, ctx))
     loaded, spec = _load(ctx, pair, sensor, axes, device_channel, reference_channel)
     result = fit_twin(loaded, spec, name)
     with os_errors(str(out)):
@@ -209,41 +187,11 @@ def fit(
     _say(f"wrote {out}: profile {result.profile['name']} (use --sensor-file {out})")
 
 
-def _profile_name(ctx: typer.Context, name: str | None, base: SensorSpec) -> str:
-    """The fitted profile's name: one ``--sensor NAME`` finds again, naming nothing known."""
-    from ..specs import _NAME
-    from ..twin.fit import default_name
-
-    chosen = name if name is not None else default_name(base)
-    shown = repr(chosen if len(chosen) <= 40 else chosen[:39] + "\u2026")
-    other = default_name(base) + ("-2" if chosen == default_name(base) else "")
-    if not _NAME.fullmatch(chosen):
-        raise SDTError(
-            f"--name {shown}: a profile name is lower-case letters, digits, '.', '_' or '-', "
-            f"starting with a letter or a digit (so that --sensor NAME finds it again); "
-            f"e.g. {other}"
-        )
+def _known(ctx: typer.Context, name: str) -> bool:
+    """Whether ``--sensor name`` finds a sensor (built in or loaded): a fitted profile's
+    name must not shadow one."""
     try:
-        registry(ctx).sensor(chosen)
+        registry(ctx).sensor(name)
     except SDTError:
-        return chosen
-    raise SDTError(
-        f"--name {shown}: a sensor of that name is already known (built in or loaded); a "
-        f"fitted profile must not shadow it: choose another, e.g. {other}"
-    )
-
-
-def _from_setting(rate_hz: float, pair: dict) -> str:
-    """The measured rate against the part's nearest rate setting (nominal / 2**k).
-
-    An ADXL357 set to 500 Hz is 0.6 % off its setting, not 87 % off the
-    profile's 4000 Hz: the clock error is read against the setting it runs at.
-    """
-    nominal = pair["device"]["nominal_rate_hz"]
-    if not (isinstance(nominal, int | float) and rate_hz > 0 and nominal > 0):
-        return f"nominal {nominal}"
-    k = int(min(max(round(math.log2(nominal / rate_hz)), 0), 16))
-    setting = nominal / 2**k
-    error = 100 * (rate_hz / setting - 1)
-    where = f"the {setting:g} Hz setting of {nominal:g}" if k else f"{nominal:g}"
-    return f"{error:+.2f} % from {where}"
+        return False
+    return True

@@ -55,6 +55,7 @@ from ..errors import SDTError
 from ..inputs import not_regular
 from ..machine_files import MACHINE_FILE, load_machine_file
 from ..signals.tokens import quote
+from ..units import TO_G
 from .manifest_checks import refuse_identical, refuse_shared_ids, refuse_signal_twice
 from .manifest_files import probe_row, reconcile
 from .manifest_table import ManifestRow, read_manifest_rows
@@ -72,7 +73,7 @@ __all__ = ["REQUIRED", "UNITS_TO_G", "open_manifest"]
 
 REQUIRED = ("path", "sampling_rate_hz", "condition", "severity", "recording_id", "channel")
 OPTIONAL = ("machine", "units", "variable", "speed", "speed_rpm", "full_scale_g")
-UNITS_TO_G = {"g": 1.0, "mg": 1e-3, "m/s^2": 1.0 / 9.80665}
+UNITS_TO_G = TO_G  # the one table (sdt_framework.units)
 
 
 def _cell(row: ManifestRow, field: str) -> str:

@@ -47,6 +47,7 @@ __all__ = [
     "adaptive_estimate",
     "assumptions",
     "design_size",
+    "exhaustive_estimate",
     "run_estimate",
     "sweep_estimate",
 ]
@@ -103,6 +104,12 @@ def run_estimate(plan: Plan, size: Estimate, report: bool) -> Estimate:
     if size.runs_to_do == 0:
         return size  # nothing left to run: a resume only writes the tables
     return replace(size, seconds=size.seconds + sum(_extra(plan, size, report).values()))
+
+
+def exhaustive_estimate(plan: Plan, report: bool, stored_runs: int = 0) -> Estimate:
+    """The exhaustive strategy's estimate: the benchmark's of ``plan`` (``stored_runs``
+    already done in the folder) plus what the sweep's run adds (:func:`run_estimate`)."""
+    return run_estimate(plan, estimate(plan, stored_runs=stored_runs), report)
 
 
 def assumptions(plan: Plan, benchmark: Estimate, report: bool) -> str:

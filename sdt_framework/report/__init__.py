@@ -14,12 +14,25 @@ load_results(results_dir) -> ResultsFolder
     The folder's tables, tolerating missing optional files.
 sensor_colors(sensors, reference)
     The one sensor -> colour mapping every figure uses.
+folder_machines(folder, registry) ; no_spec_line(machine) ; condition_cells(agreement)
+    The machines of the folder's benchmark (their specs), what one without a spec lacks,
+    and the severity table's cells, as ``sdt compare`` prints them beside the report.
 """
 
 from __future__ import annotations
 
 from .build import write_report
 from .load import ResultsFolder, load_results
+from .machines import folder_machines, no_spec_line
+from .severity_tables import condition_cells
 from .style import sensor_colors
 
-__all__ = ["ResultsFolder", "load_results", "sensor_colors", "write_report"]
+__all__ = [
+    "ResultsFolder",
+    "condition_cells",
+    "folder_machines",
+    "load_results",
+    "no_spec_line",
+    "sensor_colors",
+    "write_report",
+]

@@ -16,10 +16,10 @@ import numpy as np
 from scipy import signal
 
 from ..errors import SDTError
+from ..units import G_N
 
 __all__ = [
     "LOW_EDGE_LINES",
-    "G",
     "Spectrum",
     "asd",
     "chain_bandwidth",
@@ -28,7 +28,6 @@ __all__ = [
     "velocity_spectrum",
 ]
 
-G = 9.80665  # m/s^2 per g (standard gravity)
 #: a band's low edge must lie at least this many lines above 0 Hz: the band edge is then
 #: placed to a quarter of itself, clear of the Hann main lobe (2 lines) of what lies below
 LOW_EDGE_LINES = 4
@@ -167,7 +166,7 @@ def velocity_spectrum(
         note = f"{band[0]:g}-{top:.4g} Hz, not {band[0]:g}-{band[1]:g} Hz: {why} is {top:.4g} Hz"
     freq, power = signal.welch(x, fs=fs, window="hann", nperseg=nperseg, scaling="spectrum")
     keep = (freq >= band[0]) & (freq <= top)
-    velocity = np.sqrt(power[keep]) * G * 1e3 / (2 * np.pi * freq[keep])
+    velocity = np.sqrt(power[keep]) * G_N * 1e3 / (2 * np.pi * freq[keep])
     enbw = enbw_lines(signal.windows.hann(nperseg, sym=False))
     return Spectrum(
         freq[keep],

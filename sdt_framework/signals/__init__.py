@@ -28,9 +28,13 @@ on_even_grid, EvenSignal
 quote, brief
     A piece of a user's file in a message, never a whole line (:mod:`.tokens`).
 
-Sizes: :mod:`.sizes` (what the machine has, :class:`~.sizes.Cost`) and
-:mod:`.file_sizes` (a signal file's samples from its header, the measured
-bytes per sample of each command).
+channel_reader, part_channel, axis_variable
+    The reader of a file of channels, the channel of a part, an axis's signal name (``32:x``).
+Cost, available_memory, free_disk, building, human_bytes, human_seconds, memory_cause
+    What the machine has and what a command costs (:mod:`.sizes`).
+file_samples, DEGRADE_BYTES_PER_SAMPLE, FEATURES_BYTES_PER_SAMPLE, TWIN_BYTES_PER_SAMPLE, ...
+    A signal file's samples from its header, the measured bytes per sample of each
+    command (:mod:`.file_sizes`).
 """
 
 from __future__ import annotations
@@ -40,12 +44,28 @@ from typing import TYPE_CHECKING
 from ..lazy import lazy_exports
 
 if TYPE_CHECKING:
-    from .channels import Channel, ChannelSignal, Subchannel
+    from .channels import Channel, ChannelSignal, Subchannel, axis_variable, part_channel
     from .csv_rule import CsvSignal, read_csv_signal
     from .errors import DataFileError, SignalTypeError
-    from .files import known_formats, read_signal, reader_for, scan_file
+    from .file_sizes import (
+        DEGRADE_BYTES_PER_SAMPLE,
+        FEATURES_BYTES_PER_SAMPLE,
+        TWIN_BYTES_PER_IDE_BYTE,
+        TWIN_BYTES_PER_SAMPLE,
+        file_samples,
+    )
+    from .files import channel_reader, known_formats, read_signal, reader_for, scan_file
     from .one_signal import FileSignal, open_signal
     from .rules import SignalInfo
+    from .sizes import (
+        Cost,
+        available_memory,
+        building,
+        free_disk,
+        human_bytes,
+        human_seconds,
+        memory_cause,
+    )
     from .timebase import EvenSignal, on_even_grid
     from .tokens import brief, quote
 
@@ -55,10 +75,18 @@ _WHERE = {
     "Channel": "channels",
     "ChannelSignal": "channels",
     "Subchannel": "channels",
+    "axis_variable": "channels",
+    "part_channel": "channels",
     "CsvSignal": "csv_rule",
     "read_csv_signal": "csv_rule",
     "DataFileError": "errors",
     "SignalTypeError": "errors",
+    "DEGRADE_BYTES_PER_SAMPLE": "file_sizes",
+    "FEATURES_BYTES_PER_SAMPLE": "file_sizes",
+    "TWIN_BYTES_PER_IDE_BYTE": "file_sizes",
+    "TWIN_BYTES_PER_SAMPLE": "file_sizes",
+    "file_samples": "file_sizes",
+    "channel_reader": "files",
     "known_formats": "files",
     "read_signal": "files",
     "reader_for": "files",
@@ -66,6 +94,13 @@ _WHERE = {
     "FileSignal": "one_signal",
     "open_signal": "one_signal",
     "SignalInfo": "rules",
+    "Cost": "sizes",
+    "available_memory": "sizes",
+    "building": "sizes",
+    "free_disk": "sizes",
+    "human_bytes": "sizes",
+    "human_seconds": "sizes",
+    "memory_cause": "sizes",
     "EvenSignal": "timebase",
     "on_even_grid": "timebase",
     "brief": "tokens",
@@ -73,8 +108,13 @@ _WHERE = {
 }
 
 __all__ = [
+    "DEGRADE_BYTES_PER_SAMPLE",
+    "FEATURES_BYTES_PER_SAMPLE",
+    "TWIN_BYTES_PER_IDE_BYTE",
+    "TWIN_BYTES_PER_SAMPLE",
     "Channel",
     "ChannelSignal",
+    "Cost",
     "CsvSignal",
     "DataFileError",
     "EvenSignal",
@@ -82,10 +122,20 @@ __all__ = [
     "SignalInfo",
     "SignalTypeError",
     "Subchannel",
+    "available_memory",
+    "axis_variable",
     "brief",
+    "building",
+    "channel_reader",
+    "file_samples",
+    "free_disk",
+    "human_bytes",
+    "human_seconds",
     "known_formats",
+    "memory_cause",
     "on_even_grid",
     "open_signal",
+    "part_channel",
     "quote",
     "read_csv_signal",
     "read_signal",

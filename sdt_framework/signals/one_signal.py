@@ -29,15 +29,14 @@ from numpy.typing import NDArray
 
 from ..errors import SDTError
 from ..inputs import require_regular_file
+from ..units import TO_G, units_list
 from .errors import DataFileError
 from .files import reader_for
 from .rules import SignalInfo, acceleration_units, fault_of, names
 from .tokens import quote
 
-__all__ = ["CLI_SPELLING", "TO_G", "FileSignal", "open_signal"]
+__all__ = ["CLI_SPELLING", "FileSignal", "open_signal"]
 
-#: multiply by this to get g (standard gravity for m/s^2, ISO 80000-3)
-TO_G = {"g": 1.0, "mg": 1e-3, "m/s^2": 1 / 9.80665}
 #: how the command line spells the choices a file may need: the signal (with its placeholder),
 #: the rate, the units, each reader option
 CLI_SPELLING: Mapping[str, str] = {
@@ -157,7 +156,7 @@ def _units(signal: FileSignal, units: str | None, spelling: Mapping) -> str:
     if known is None:
         raise SDTError(
             f"{signal.label}: the file gives its units as {quote(stated)}, not an acceleration "
-            f"(g, mg, m/s^2); scale the channel to acceleration where it was recorded"
+            f"({units_list()}); scale the channel to acceleration where it was recorded"
         )
     if units is not None and units != known:
         raise SDTError(

@@ -28,6 +28,7 @@ from typing import Any
 import numpy as np
 
 from ..dtypes import describe_dtype, is_real
+from ..units import acceleration_units
 from .errors import DataFileError, SignalTypeError
 from .tokens import quote, shown
 
@@ -54,22 +55,6 @@ HEADER_RATE_TOLERANCE = 1e-6
 #: rates a file may state, Hz: the first third-octave band (10 Hz) needs 25 Hz; no
 #: accelerometer DAQ samples above 10 MHz (the twin's pairs are held to the same range)
 RATE_RANGE_HZ = (25.0, 1e7)
-
-#: the spellings of acceleration units found in DAQ files -> the manifest's unit names
-_UNIT_SPELLINGS = {
-    "g": "g",
-    "gn": "g",
-    "g0": "g",
-    "mg": "mg",
-    "m/s^2": "m/s^2",
-    "m/s2": "m/s^2",
-    "m/s²": "m/s^2",
-    "m/s/s": "m/s^2",
-    "m/sec^2": "m/s^2",
-    "(m/s)/s": "m/s^2",
-    "m s^-2": "m/s^2",
-    "m*s^-2": "m/s^2",
-}
 
 
 @dataclass(frozen=True)
@@ -119,15 +104,6 @@ class SignalInfo:
     def as_dict(self) -> dict[str, Any]:
         """JSON-ready form, with the duration."""
         return {**asdict(self), "duration_s": self.duration_s, "units_stated": self.units_stated}
-
-
-def acceleration_units(units: str | None) -> str | None:
-    """The manifest's name (``g``, ``mg``, ``m/s^2``) for a unit string from a file, or None
-    when it is not one of those (a voltage, a force, an empty label)."""
-    if units is None:
-        return None
-    key = " ".join(units.strip().split()).lower().replace("**", "^")
-    return _UNIT_SPELLINGS.get(key)
 
 
 def checked_rate(file: Path, rate: float, stated: str, fix: str) -> tuple[float | None, str | None]:

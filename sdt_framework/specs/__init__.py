@@ -29,6 +29,7 @@ from .sensor import POINT_SUFFIX as POINT_SUFFIX
 from .sensor import Axis as Axis
 from .sensor import SensorSpec
 from .stage_use import StageUse, Tolerance
+from .supply import Supply, SupplyFigure
 
 __all__ = [
     "BearingSpec",
@@ -42,5 +43,7 @@ __all__ = [
     "SensorSpec",
     "Spec",
     "StageUse",
+    "Supply",
+    "SupplyFigure",
     "Tolerance",
 ]

@@ -39,11 +39,7 @@ Two readings say what the pair itself can and cannot tell:
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any
-
 import numpy as np
-from scipy import signal
 
 from ..errors import SDTError
 from ..specs import SensorSpec
@@ -51,6 +47,19 @@ from . import floor, spectra
 from .align import Alignment, align
 from .clipping import clipping
 from .pair import Pair
+from .results import (
+    AlignmentInfo,
+    Band,
+    CheckResult,
+    CheckSpectra,
+    DeviceInfo,
+    Distortion,
+    Floor,
+    PairInfo,
+    SideInfo,
+    Summary,
+)
+from .transfer import transfer
 from .verdict import SCALE_RANGE, STATIC_TOLERANCE, calibration, check_reference_scale, no_band
 
 __all__ = [
@@ -68,37 +77,6 @@ __all__ = [
 MARGIN_DB = 10.0
 #: ... and lies below this share of the reference's rate (its front end's band)
 REFERENCE_LIMIT = 0.4
-
-
-@dataclass
-class CheckResult:
-    """Everything ``sdt twin check`` prints, JSON-ready through :meth:`as_dict`."""
-
-    pair: dict[str, Any]
-    alignment: dict[str, Any]
-    bands: list[dict[str, Any]]
-    floors: list[dict[str, Any]]
-    distortion: dict[str, Any]
-    clipped: dict[str, Any]
-    calibration: dict[str, Any]
-    summary: dict[str, Any]
-    spectra: dict[str, Any] = field(repr=False, default_factory=dict)  # for the figures
-
-    def as_dict(self) -> dict[str, Any]:
-        """JSON-ready form (the figure arrays left out; NaN and infinities as None, so the
-        JSON is valid: a THD with no fundamental, a gain of a silent band)."""
-        return _finite({k: v for k, v in vars(self).items() if k != "spectra"})
-
-
-def _finite(value: Any) -> Any:
-    """``value`` with every non-finite float (at any depth) replaced by None."""
-    if isinstance(value, dict):
-        return {k: _finite(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_finite(v) for v in value]
-    if isinstance(value, float | np.floating) and not np.isfinite(value):
-        return None
-    return value
 
 
 def in_sample(sensor: SensorSpec, pair: Pair) -> bool:
@@ -131,45 +109,49 @@ def _judge(ref_rms: np.ndarray, floor: np.ndarray, bands: np.ndarray, limit: flo
     return out
 
 
-def _transfer(a: Alignment, bands: np.ndarray, judged: list) -> tuple[dict, dict]:
-    """Per judgeable band the transfer twin -> device at its strongest bin; and the arrays."""
-    nperseg = spectra.segment(a.rate_hz, a.twin.shape[1])
-    f, pxy = signal.csd(a.twin, a.device, fs=a.rate_hz, nperseg=nperseg, axis=-1)
-    _, pxx = signal.welch(a.twin, fs=a.rate_hz, nperseg=nperseg, axis=-1)
-    _, coh = signal.coherence(a.twin, a.device, fs=a.rate_hz, nperseg=nperseg, axis=-1)
-    arrays = {"f_h": f, "h": pxy / np.where(pxx > 0, pxx, np.inf), "coherence": coh}
-    out = {}
-    for i, row in enumerate(judged):
-        for b, (ok, _) in enumerate(row):
-            inside = np.flatnonzero((f >= bands[b, 0]) & (f < bands[b, 2]))
-            if not ok or not len(inside):
-                continue
-            k = inside[np.argmax(pxx[i, inside])]
-            h = pxy[i, k] / pxx[i, k]
-            out[(i, b)] = {
-                "at_hz": float(f[k]),
-                "gain_db": float(20 * np.log10(abs(h))),
-                "phase_deg": float(np.degrees(np.angle(h))),
-                "coherence": float(coh[i, k]),
-            }
-    return out, arrays
-
-
 def _db(a: float, b: float) -> float:
     """20 log10(a / b); NaN (None in JSON) when either is zero or not finite."""
     ok = a > 0 and b > 0 and np.isfinite(a) and np.isfinite(b)
     return float(20 * np.log10(a / b)) if ok else float("nan")
 
 
-def _floor_judged(reference: float, device: float) -> dict[str, Any]:
-    """Whether the twin's noise floor can be judged: the reference's must lie well below."""
+def _floor_judged(reference: float, device: float) -> tuple[bool, str]:
+    """Whether the twin's noise floor can be judged (the reference's must lie well below),
+    and why."""
     if not (reference > 0 and np.isfinite(reference) and device > 0 and np.isfinite(device)):
-        return {"judgeable": False, "reason": "a floor of zero or beyond floats: not measurable"}
+        return False, "a floor of zero or beyond floats: not measurable"
     below = float(20 * np.log10(device / reference))
     if below >= MARGIN_DB:
-        return {"judgeable": True, "reason": f"reference floor {below:.1f} dB below the device's"}
+        return True, f"reference floor {below:.1f} dB below the device's"
     where = f"only {below:.1f} dB below" if below >= 0 else f"{-below:.1f} dB above"
-    return {"judgeable": False, "reason": f"reference floor {where} the device's"}
+    return False, f"reference floor {where} the device's"
+
+
+def _pair_info(pair: Pair, sensor: SensorSpec, a: Alignment) -> PairInfo:
+    ref, dev = pair.reference, pair.device
+    return PairInfo(
+        file=pair.name,
+        sha256=pair.digest,
+        sensor=sensor.name,
+        in_sample=in_sample(sensor, pair),
+        reference=SideInfo(ref.label, ref.part, ref.rate_hz),
+        device=DeviceInfo(dev.label, dev.part, a.rate_hz, a.nominal_rate_hz),
+        overlap_s=a.device.shape[1] / a.rate_hz,
+        notes=tuple(n for n in (ref.note, dev.note) if n),
+    )
+
+
+def _alignment_info(a: Alignment) -> AlignmentInfo:
+    return AlignmentInfo(
+        rate_hz=a.rate_hz,
+        clock_error_pct=100 * (a.rate_hz / a.nominal_rate_hz - 1),
+        delay_s=a.delay_s,
+        signs=tuple(a.signs),
+        angles_deg=tuple(a.angles_deg),
+        rotation=tuple(tuple(row) for row in a.rotation.round(6).tolist()),
+        correlation=a.correlation,
+        rotation_estimated=a.rotation_estimated,
+    )
 
 
 def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
@@ -190,17 +172,16 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
         raise SDTError(no_band(pair.name, sensor, a.rate_hz, limit, len(bands), MARGIN_DB))
     real = spectra.band_rms(f_dev, p_dev, bands)
     twin = spectra.band_rms(f_dev, p_twin, bands)
-    transfer, transfer_arrays = _transfer(a, bands, judged)
+    transfers, (f_h, h, coherence) = transfer(a, bands, judged)
     rows, errors = [], []
     for i, axis in enumerate(pair.device.axes):
         for b, (ok, reason) in enumerate(judged[i]):
             error = _db(twin[i, b], real[i, b])
-            rows.append({
-                "axis": axis, "f_lower_hz": float(bands[b, 0]), "f_centre_hz": float(bands[b, 1]),
-                "f_upper_hz": float(bands[b, 2]), "real_rms_g": float(real[i, b]),
-                "twin_rms_g": float(twin[i, b]), "error_db": error, "judgeable": ok,
-                "reason": reason, "transfer": transfer.get((i, b)),
-            })  # fmt: skip
+            rows.append(Band(
+                axis, float(bands[b, 0]), float(bands[b, 1]), float(bands[b, 2]),
+                real_rms_g=float(real[i, b]), twin_rms_g=float(twin[i, b]), error_db=error,
+                judgeable=ok, reason=reason, transfer=transfers.get((i, b)),
+            ))  # fmt: skip
             if ok:
                 errors.append((abs(error), error, axis, float(bands[b, 1])))
     floors_hi = a.rate_hz / 4  # below the digital corner of either part
@@ -212,84 +193,41 @@ def check_twin(pair: Pair, sensor: SensorSpec, seed: int = 0) -> CheckResult:
     f0 = float(f_dev[np.argmax(p_dev[main, 1:]) + 1])
     worst = max(errors)
     clipped = clipping(a.device, a.twin, pair.device.axes, sensor.full_scale_g)
+    floors = []
+    for axis, r, t, d, q in zip(pair.device.axes, ref_floor, twin_floor, dev_floor,
+                                quiet.sum(axis=1), strict=True):  # fmt: skip
+        judgeable, why = _floor_judged(float(r), float(d))
+        floors.append(Floor(
+            axis, reference_ug=1e6 * float(r), twin_ug=1e6 * float(t), device_ug=1e6 * float(d),
+            twin_error_db=_db(t, d), quiet_s=float(q * dev_segments.segment_s),
+            of_s=float(count * dev_segments.segment_s), judgeable=judgeable, reason=why,
+        ))  # fmt: skip
     return CheckResult(
-        pair={
-            "file": pair.name,
-            "sha256": pair.digest,
-            "sensor": sensor.name,
-            "in_sample": in_sample(sensor, pair),
-            "reference": {
-                "channel": pair.reference.label,
-                "part": pair.reference.part,
-                "rate_hz": ref_rate,
-            },
-            "device": {
-                "channel": pair.device.label,
-                "part": pair.device.part,
-                "rate_hz": a.rate_hz,
-                "nominal_rate_hz": a.nominal_rate_hz,
-            },
-            "overlap_s": a.device.shape[1] / a.rate_hz,
-            "notes": [n for n in (pair.reference.note, pair.device.note) if n],
-        },
-        alignment={
-            "rate_hz": a.rate_hz,
-            "clock_error_pct": 100 * (a.rate_hz / a.nominal_rate_hz - 1),
-            "delay_s": a.delay_s,
-            "signs": a.signs,
-            "angles_deg": a.angles_deg,
-            "rotation": a.rotation.round(6).tolist(),
-            "correlation": a.correlation,
-            "rotation_estimated": a.rotation_estimated,
-        },
-        bands=rows,
-        floors=[
-            {
-                "axis": axis,
-                "reference_ug": 1e6 * float(r),
-                "twin_ug": 1e6 * float(t),
-                "device_ug": 1e6 * float(d),
-                "twin_error_db": _db(t, d),
-                "quiet_s": float(q * dev_segments.segment_s),
-                "of_s": float(count * dev_segments.segment_s),
-                **_floor_judged(float(r), float(d)),
-            }
-            for axis, r, t, d, q in zip(
-                pair.device.axes,
-                ref_floor,
-                twin_floor,
-                dev_floor,
-                quiet.sum(axis=1),
-                strict=True,
-            )
-        ],
-        distortion={
-            "axis": pair.device.axes[main],
-            "tone_hz": f0,
-            "reference": spectra.thd(f_ref, p_ref[main], f0),
-            "twin": spectra.thd(f_dev, p_twin[main], f0),
-            "device": spectra.thd(f_dev, p_dev[main], f0),
-        },
+        pair=_pair_info(pair, sensor, a),
+        alignment=_alignment_info(a),
+        bands=tuple(rows),
+        floors=tuple(floors),
+        distortion=Distortion(
+            axis=pair.device.axes[main],
+            tone_hz=f0,
+            reference=spectra.thd(f_ref, p_ref[main], f0),
+            twin=spectra.thd(f_dev, p_twin[main], f0),
+            device=spectra.thd(f_dev, p_dev[main], f0),
+        ),
         clipped=clipped,
         calibration=calibration(
-            a.device, transfer, main, clipped, sensor, a.rate_hz, (f_dev, p_dev[main])
+            a.device, transfers, main, clipped, sensor, a.rate_hz, (f_dev, p_dev[main])
         ),
-        summary={
-            "judgeable_bands": len(errors),
-            "worst_error_db": worst[1],
-            "worst_axis": worst[2],
-            "worst_band_hz": worst[3],
-            "rms_error_db": float(np.sqrt(np.mean([e[1] ** 2 for e in errors]))),
-        },
-        spectra={
-            "f": f_dev,
-            "device": p_dev,
-            "twin": p_twin,
-            "f_ref": f_ref,
-            "reference": p_ref,
-            "main": main,
-            "axes": pair.device.axes,
-            "judged": [b for b in rows if b["judgeable"]],
-            **transfer_arrays,
-        },
-    )
+        summary=Summary(
+            judgeable_bands=len(errors),
+            worst_error_db=worst[1],
+            worst_axis=worst[2],
+            worst_band_hz=worst[3],
+            rms_error_db=float(np.sqrt(np.mean([e[1] ** 2 for e in errors]))),
+        ),
+        spectra=CheckSpectra(
+            f=f_dev, device=p_dev, twin=p_twin, f_ref=f_ref, reference=p_ref, main=main,
+            axes=tuple(pair.device.axes), judged=tuple(b for b in rows if b.judgeable),
+            f_h=f_h, h=h, coherence=coherence,
+        ),
+    )  # fmt: skip

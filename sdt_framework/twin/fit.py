@@ -31,28 +31,43 @@ from __future__ import annotations
 
 import datetime as dt
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from ..errors import SDTError
-from ..specs import SensorSpec
+from ..specs import _NAME, SensorSpec
+from ..units import TO_G, UNITS
 from . import spectra
 from .align import at_rate
-from .check import CheckResult, check_twin
+from .check import check_twin
 from .fit_corner import fit_corner
 from .pair import Pair
+from .results import CheckResult
 
-__all__ = ["MIN_BANDS", "SCALE_RANGE", "FitResult", "default_name", "fit_twin", "profile_toml"]
+__all__ = [
+    "MIN_BANDS",
+    "SCALE_RANGE",
+    "FitResult",
+    "default_name",
+    "fit_twin",
+    "profile_name",
+    "profile_toml",
+]
 
 #: judgeable bands needed on one axis before a gain is fitted
 MIN_BANDS = 3
 #: a fitted gain (device / twin) outside this range is no part's sensitivity error
 SCALE_RANGE = (0.5, 2.0)
-#: unit mix-ups a gain far from 1 points at: ratio -> what the device's values probably are
-UNIT_RATIOS = {1000.0: "in mg, declared as g", 9.80665: "in m/s^2, declared as g",
-               1e-3: "in g, declared as mg", 1 / 9.80665: "in g, declared as m/s^2"}  # fmt: skip
+#: unit mix-ups a gain far from 1 points at: ratio (device / twin) -> what the device's values
+#: probably are (one unit read as g, or g read as another)
+UNIT_RATIOS = {
+    TO_G[declared] / TO_G[actual]: f"in {actual}, declared as {declared}"
+    for other in UNITS[1:]
+    for actual, declared in ((other, "g"), ("g", other))
+}
 
 
 @dataclass
@@ -99,29 +114,27 @@ def _noise(pair: Pair, sensor: SensorSpec) -> dict[str, dict[str, Any]]:
 
 def _gain(pair: Pair, check: CheckResult) -> tuple[dict[str, Any] | None, str]:
     """The scale error of the axis with the most judgeable bands, or None and why not."""
-    counts = {
-        a: sum(b["judgeable"] and b["axis"] == a for b in check.bands) for a in pair.device.axes
-    }
+    counts = {a: sum(b.judgeable and b.axis == a for b in check.bands) for a in pair.device.axes}
     axis = max(counts, key=counts.__getitem__)
-    rows = [b for b in check.bands if b["judgeable"] and b["axis"] == axis]
+    rows = [b for b in check.bands if b.judgeable and b.axis == axis]
     if len(rows) < MIN_BANDS:
         return None, f"only {len(rows)} judgeable band(s) on any axis (at least {MIN_BANDS})"
-    if check.calibration["reference_off"]:
+    if check.calibration.reference_off:
         k = check.calibration
         return None, (
-            f"the device reads gravity as {k['static_g']:.3f} g, so the x{k['tone_gain']:.3f} "
-            f"gain disagreement at {k['tone_hz']:.0f} Hz is the reference's calibration, "
+            f"the device reads gravity as {k.static_g:.3f} g, so the x{k.tone_gain:.3f} "
+            f"gain disagreement at {k.tone_hz:.0f} Hz is the reference's calibration, "
             f"not the part's"
         )
-    real = np.array([b["real_rms_g"] for b in rows])
-    twin = np.array([b["twin_rms_g"] for b in rows])
+    real = np.array([b.real_rms_g for b in rows])
+    twin = np.array([b.twin_rms_g for b in rows])
     gain = float(real @ twin / (twin @ twin))  # least squares, real ~ gain x twin
     residual = real - gain * twin
     se = float(np.sqrt(residual @ residual / (len(rows) - 1) / (twin @ twin)))
     return {
         "value": 100 * (gain - 1), "uncertainty": 100 * se,
         "from": f"{len(rows)} judgeable bands of axis {axis}, "
-                f"{rows[0]['f_lower_hz']:.0f}-{rows[-1]['f_upper_hz']:.0f} Hz",
+                f"{rows[0].f_lower_hz:.0f}-{rows[-1].f_upper_hz:.0f} Hz",
     }, ""  # fmt: skip
 
 
@@ -129,6 +142,27 @@ def default_name(base: SensorSpec) -> str:
     """``NAME-fitted`` for a base profile, a part's mode spelt without brackets (a profile
     named ``adxl355[odr=4000]-fitted`` could not be asked for again by name)."""
     return re.sub(r"[^a-z0-9._-]+", "-", base.name).strip("-") + "-fitted"
+
+
+def profile_name(name: str | None, base: SensorSpec, known: Callable[[str], bool]) -> str:
+    """The fitted profile's name (``name``, or :func:`default_name`): one ``--sensor NAME``
+    finds again, naming nothing ``known`` (built in or loaded: a fitted profile must not
+    shadow it); else a one-line :class:`SDTError` with a name that would do."""
+    chosen = name if name is not None else default_name(base)
+    shown = repr(chosen if len(chosen) <= 40 else chosen[:39] + "\u2026")
+    other = default_name(base) + ("-2" if chosen == default_name(base) else "")
+    if not _NAME.fullmatch(chosen):
+        raise SDTError(
+            f"--name {shown}: a profile name is lower-case letters, digits, '.', '_' or '-', "
+            f"starting with a letter or a digit (so that --sensor NAME finds it again); "
+            f"e.g. {other}"
+        )
+    if known(chosen):
+        raise SDTError(
+            f"--name {shown}: a sensor of that name is already known (built in or loaded); a "
+            f"fitted profile must not shadow it: choose another, e.g. {other}"
+        )
+    return chosen
 
 
 def _plausible(gain: dict[str, Any], pair: Pair) -> None:

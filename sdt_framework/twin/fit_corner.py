@@ -27,7 +27,8 @@ from scipy import optimize
 from ..specs import SensorSpec
 from . import spectra
 from .align import align
-from .check import REFERENCE_LIMIT, CheckResult
+from .check import REFERENCE_LIMIT
+from .results import CheckResult
 from .signals import Pair
 
 __all__ = ["STRONG", "fit_corner"]
@@ -60,14 +61,14 @@ def fit_corner(
     nsd = base.noise_density_ug_rthz * 1e-6
     strong = [
         b for b in check.bands
-        if b["judgeable"]
-        and b["real_rms_g"] >= STRONG * nsd * np.sqrt(b["f_upper_hz"] - b["f_lower_hz"])
+        if b.judgeable
+        and b.real_rms_g >= STRONG * nsd * np.sqrt(b.f_upper_hz - b.f_lower_hz)
     ]  # fmt: skip
     if not strong:
         return None, None, "no judgeable band stands above the part's noise"
-    axis = max({b["axis"] for b in strong}, key=lambda a: sum(b["axis"] == a for b in strong))
-    rows = [b for b in strong if b["axis"] == axis]
-    top = max(b["f_centre_hz"] for b in rows)
+    axis = max({b.axis for b in strong}, key=lambda a: sum(b.axis == a for b in strong))
+    rows = [b for b in strong if b.axis == axis]
+    top = max(b.f_centre_hz for b in rows)
     if len(rows) < 3 or top < REACH * fc0:
         return (
             None,
@@ -78,8 +79,8 @@ def fit_corner(
             ),
         )
     index = pair.device.axes.index(axis)
-    bands = np.array([[b["f_lower_hz"], b["f_centre_hz"], b["f_upper_hz"]] for b in rows])
-    real_db = 20 * np.log10([b["real_rms_g"] for b in rows])
+    bands = np.array([[b.f_lower_hz, b.f_centre_hz, b.f_upper_hz] for b in rows])
+    real_db = 20 * np.log10([b.real_rms_g for b in rows])
 
     def residual(log_fc: float) -> np.ndarray:
         twin_db = 20 * np.log10(_levels(pair, _with_corner(base, np.exp(log_fc)), index, bands))
@@ -116,8 +117,8 @@ def fit_corner(
     fitted = _with_corner(base, corner)
     twin_db = 20 * np.log10(_levels(pair, fitted, index, bands))
     gain_db = float(np.mean(real_db - twin_db))
-    span = f"{len(rows)} strong judgeable bands of axis {axis}, {rows[0]['f_lower_hz']:.0f}-" \
-        f"{rows[-1]['f_upper_hz']:.0f} Hz"  # fmt: skip
+    span = f"{len(rows)} strong judgeable bands of axis {axis}, {rows[0].f_lower_hz:.0f}-" \
+        f"{rows[-1].f_upper_hz:.0f} Hz"  # fmt: skip
     gain_se_db = float(np.sqrt(s2 / len(rows)))
     gain = 10 ** (gain_db / 20)
     return (

@@ -38,9 +38,10 @@ from pydantic import BaseModel, ConfigDict, Field, FiniteFloat, model_validator
 from ..errors import SDTError
 from ..signals.csv_rule import read_csv_signal
 from ..signals.errors import DataFileError
-from ..signals.one_signal import TO_G, open_signal
+from ..signals.one_signal import open_signal
 from ..signals.timebase import on_even_grid
 from ..toml_files import read_toml, validate_file
+from ..units import TO_G, Unit
 from .signals import Pair, Signal, chosen_axes, digest
 
 __all__ = ["PairSignal", "is_pair_toml", "load_toml_pair"]
@@ -61,7 +62,7 @@ class PairSignal(BaseModel):
     time_column: str | None = None
     rate_hz: FiniteFloat | None = Field(None, gt=0)
     start_s: FiniteFloat = 0.0
-    units: Literal["g", "mg", "m/s^2"] | None = None
+    units: Unit | None = None
     part: str | None = None
 
     @model_validator(mode="after")

@@ -5,14 +5,14 @@ from __future__ import annotations
 import hashlib
 import os
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
 
 from ..errors import SDTError
 
-__all__ = ["Pair", "Signal", "digest", "unit_mistake"]
+__all__ = ["Pair", "Signal", "digest", "scaled_reference", "unit_mistake"]
 
 
 def unit_mistake() -> str:
@@ -54,6 +54,19 @@ class Pair:
     def name(self) -> str:
         """The file's name."""
         return Path(self.path).name
+
+
+def scaled_reference(pair: Pair, factor: float) -> Pair:
+    """``pair`` with its reference's values multiplied by ``factor`` (``--reference-scale``:
+    a reference whose calibration the check found off), said in the reference's note.
+    A factor of 1 returns ``pair`` itself; the factor is checked by the caller
+    (:func:`.verdict.check_reference_scale`) before any file is read."""
+    if factor == 1.0:
+        return pair
+    ref = pair.reference
+    note = f"reference values multiplied by {factor:g} (--reference-scale)"
+    note = "; ".join(filter(None, (ref.note, note)))
+    return replace(pair, reference=replace(ref, values=ref.values * factor, note=note))
 
 
 def digest(*paths: str | os.PathLike[str]) -> str:

@@ -17,18 +17,21 @@ Public API
 ----------
 noise_check(sensor, ...), NoiseCheck, window_stats, WindowStats
     The zero-motion noise check and the statistics of its windows.
-plot_noise_check(result, path, allan=None)
-    Its figure (matplotlib Agg, no pyplot state).
-allan_curve(x, fs), AllanCurve, allan_check(check, sensor), AllanCheck
-    The Allan deviation of a zero-motion signal and its read-off against the profile.
+zero_motion_cost(sensor, fs_ref, n_windows, window_length)
+    What a check costs before it runs (input samples, peak bytes, seconds).
+plot_noise_check(result, path, allan=None) ; plot_formats()
+    Its figure (matplotlib Agg, no pyplot state); the file formats a figure may be saved in.
+allan_curve(x, fs), AllanCurve, allan_check(check, sensor), AllanCheck ; allan_seconds(n)
+    The Allan deviation of a zero-motion signal and its read-off against the profile; the
+    estimated run time of one curve of n samples.
 """
 
 from __future__ import annotations
 
-from .allan import AllanCurve, allan_curve
+from .allan import AllanCurve, allan_curve, allan_seconds
 from .allan_check import AllanCheck, allan_check
-from .noise_check import NoiseCheck, WindowStats, noise_check, window_stats
-from .noise_plot import plot_noise_check
+from .noise_check import NoiseCheck, WindowStats, noise_check, window_stats, zero_motion_cost
+from .noise_plot import plot_formats, plot_noise_check
 
 __all__ = [
     "AllanCheck",
@@ -37,7 +40,10 @@ __all__ = [
     "WindowStats",
     "allan_check",
     "allan_curve",
+    "allan_seconds",
     "noise_check",
+    "plot_formats",
     "plot_noise_check",
     "window_stats",
+    "zero_motion_cost",
 ]

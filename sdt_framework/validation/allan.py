@@ -38,6 +38,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..units import G_N
+
 __all__ = [
     "FLOOR_FACTOR",
     "AllanCurve",
@@ -52,7 +54,6 @@ __all__ = [
     "white_values",
 ]
 
-G0 = 9.80665  # standard gravity, m/s^2
 ROOT_HOUR = 60.0  # sqrt(3600 s), per sqrt(h) -> per sqrt(s)
 FLOOR_FACTOR = math.sqrt(2.0 * math.log(2.0) / math.pi)  # 0.6643: 1/f floor = 0.664 B
 PER_DECADE = 10
@@ -240,7 +241,7 @@ def white_values(n_g: float | None) -> dict[str, float | None]:
     return {
         "n_ug_rthz": _finite(n * 1e6),
         "nsd_ug_rthz": _finite(n * math.sqrt(2.0) * 1e6),
-        "vrw_mps_rthr": _finite(n * G0 * ROOT_HOUR),
+        "vrw_mps_rthr": _finite(n * G_N * ROOT_HOUR),
     }
 
 

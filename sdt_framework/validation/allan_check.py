@@ -15,9 +15,9 @@ from typing import Any
 import numpy as np
 
 from ..specs import SensorSpec
+from ..units import G_N
 from .allan import (
     FLOOR_FACTOR,
-    G0,
     ROOT_HOUR,
     AllanCurve,
     allan_curve,
@@ -75,7 +75,7 @@ def configured_terms(sensor: SensorSpec) -> Configured:
         if use.name == "white-noise":
             white2 += (p["density_ug_rthz"] * 1e-6) ** 2
         elif use.name == "vrw":
-            white2 += 2.0 * (p["vrw_mps_rthr"] / ROOT_HOUR / G0) ** 2
+            white2 += 2.0 * (p["vrw_mps_rthr"] / ROOT_HOUR / G_N) ** 2
         elif use.name == "flicker":
             flat2 += (FLOOR_FACTOR * p["bias_instability_ug"] * 1e-6) ** 2
         elif use.name == "gauss-markov":

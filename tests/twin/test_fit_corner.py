@@ -53,8 +53,8 @@ def test_fit_finds_the_corner_and_the_gain_together(specs):
     # |H_900(1250)| / |H_1600(1250)| times the gain, in dB
     h = lambda fc: 1 / np.sqrt(1 + (1250.0 / fc) ** 2)  # noqa: E731
     expected = 20 * np.log10(h(1600.0) / h(TRUE_CORNER) / (1 + GAIN_PCT / 100))
-    band = next(b for b in check_twin(pair, base).bands if b["f_lower_hz"] < 1250 < b["f_upper_hz"])
-    assert band["error_db"] == pytest.approx(expected, abs=0.1)
+    band = next(b for b in check_twin(pair, base).bands if b.f_lower_hz < 1250 < b.f_upper_hz)
+    assert band.error_db == pytest.approx(expected, abs=0.1)
 
 
 def test_tones_far_below_the_corner_determine_nothing(specs):

@@ -62,8 +62,8 @@ def test_a_pair_of_daq_files_takes_rate_and_units_from_them(pairs, registry):
         np.testing.assert_allclose(b.values, a.values, rtol=1e-12, atol=1e-15)
     sensor = registry.sensor("adxl345")
     for a, b in zip(check_twin(arrays, sensor).bands, check_twin(daq, sensor).bands, strict=True):
-        assert b["real_rms_g"] == pytest.approx(a["real_rms_g"], rel=1e-9)
-        assert b["judgeable"] == a["judgeable"]
+        assert b.real_rms_g == pytest.approx(a.real_rms_g, rel=1e-9)
+        assert b.judgeable == a.judgeable
 
 
 def test_a_pair_is_read_only_by_the_readers_handed_down(pairs, registry):

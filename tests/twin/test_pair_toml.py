@@ -61,9 +61,9 @@ def test_toml_pair_checks_like_the_ide_file(written, registry):
     from_toml = check_twin(pair, sensor)
     from_ide = check_twin(ide, sensor)
     for a, b in zip(from_toml.bands, from_ide.bands, strict=True):
-        assert a["real_rms_g"] == pytest.approx(b["real_rms_g"], rel=1e-6)
-        assert a["twin_rms_g"] == pytest.approx(b["twin_rms_g"], rel=1e-3)
-        assert a["judgeable"] == b["judgeable"]
+        assert a.real_rms_g == pytest.approx(b.real_rms_g, rel=1e-6)
+        assert a.twin_rms_g == pytest.approx(b.twin_rms_g, rel=1e-3)
+        assert a.judgeable == b.judgeable
 
 
 @pytest.mark.parametrize(

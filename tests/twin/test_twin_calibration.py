@@ -54,9 +54,9 @@ def true(registry):
 
 def test_a_sound_reference_agrees_in_gain(true):
     k = check_twin(_pair(true), true).calibration
-    assert k["static_g"] == pytest.approx(1.0, abs=0.01)
-    assert k["tone_gain"] == pytest.approx(1.0, abs=0.01)
-    assert not k["reference_off"]
+    assert k.static_g == pytest.approx(1.0, abs=0.01)
+    assert k.tone_gain == pytest.approx(1.0, abs=0.01)
+    assert not k.reference_off
 
 
 def test_a_reference_reading_low_is_named_and_not_fitted_into_the_part(true, registry):
@@ -64,9 +64,9 @@ def test_a_reference_reading_low_is_named_and_not_fitted_into_the_part(true, reg
     # then reads 1.6 x the twin at the tone, and the fault is the reference's
     pair = _pair(true, reference_gain=1 / 1.6)
     k = check_twin(pair, true).calibration
-    assert k["static_g"] == pytest.approx(1.0, abs=0.01)
-    assert k["tone_gain"] == pytest.approx(1.6, rel=0.01)
-    assert k["reference_off"]
+    assert k.static_g == pytest.approx(1.0, abs=0.01)
+    assert k.tone_gain == pytest.approx(1.6, rel=0.01)
+    assert k.reference_off
     fitted = fit_twin(pair, registry.sensor("adxl345"))
     assert "scale_error_pct" not in fitted.fitted
     assert "reference's calibration" in fitted.kept["scale"]
@@ -80,7 +80,7 @@ def test_a_device_without_gravity_is_not_taken_for_a_sound_one(true, registry):
                  Signal(pair.device.label, pair.device.part, pair.device.axes, device, RATE, 0.0),
                  pair.digest)  # fmt: skip
     k = check_twin(moved, true).calibration
-    assert k["static_g"] < 0.05 and not k["reference_off"]
+    assert k.static_g < 0.05 and not k.reference_off
     # the fit cannot tell whose calibration is off, and fits the gain into the part
     fitted = fit_twin(moved, registry.sensor("adxl345"))
     assert fitted.fitted["scale_error_pct"]["value"] == pytest.approx(100 * (1.6 * 1.02 - 1), abs=1)
@@ -95,6 +95,6 @@ def test_a_floor_is_judged_only_below_a_quiet_reference(true, reference_nsd_ug):
     device = np.hypot(NSD, 1e6 * step / np.sqrt(12) / np.sqrt(RATE / 2))
     expected = 20 * np.log10(device / reference_nsd_ug) >= MARGIN_DB
     for floor in floors:
-        assert floor["device_ug"] == pytest.approx(device, rel=0.1)
-        assert floor["reference_ug"] == pytest.approx(reference_nsd_ug, rel=0.1)
-        assert floor["judgeable"] == expected, floor
+        assert floor.device_ug == pytest.approx(device, rel=0.1)
+        assert floor.reference_ug == pytest.approx(reference_nsd_ug, rel=0.1)
+        assert floor.judgeable == expected, floor

@@ -61,14 +61,14 @@ def test_values_are_in_g_and_uneven_timestamps_are_resampled_with_a_note():
 def test_check_reports_the_real_devices_band_rms(registry, readers):
     pair = load_pair(DATA / "SSX66115.IDE", "adxl345", readers=readers)
     result = check_twin(pair, registry.sensor("adxl345"))
-    assert result.summary["judgeable_bands"] >= 8
+    assert result.summary.judgeable_bands >= 8
     # independent: the device's raw samples over the compared span, and Welch's estimate
     # written out with numpy (Hann segments of 2^round(log2 fs) samples, half overlap,
     # each segment's mean removed, density scaling), band power summed
     raw = _raw("SSX66115.IDE", 32)
     t = raw[0] * 1e-6
-    fs = result.pair["device"]["rate_hz"]
-    n = round(result.pair["overlap_s"] * fs)
+    fs = result.pair.device.rate_hz
+    n = round(result.pair.overlap_s * fs)
     ref_t = _raw("SSX66115.IDE", 8)[0] * 1e-6
     first = int(np.searchsorted(t, max(t[0], ref_t[0]) + 0.25))
     span = raw[1:, first : first + n]
@@ -81,10 +81,10 @@ def test_check_reports_the_real_devices_band_rms(registry, readers):
     density = power.mean(axis=1) * 2 / (fs * (window**2).sum())
     f = np.fft.rfftfreq(size, 1 / fs)
     axes = {"x": 0, "y": 1, "z": 2}
-    for band in (b for b in result.bands if b["judgeable"]):
-        inside = (f >= band["f_lower_hz"]) & (f < band["f_upper_hz"])
-        expected = np.sqrt(density[axes[band["axis"]], inside].sum() * (f[1] - f[0]))
-        assert band["real_rms_g"] == pytest.approx(expected, rel=0.01), band
+    for band in (b for b in result.bands if b.judgeable):
+        inside = (f >= band.f_lower_hz) & (f < band.f_upper_hz)
+        expected = np.sqrt(density[axes[band.axis], inside].sum() * (f[1] - f[0]))
+        assert band.real_rms_g == pytest.approx(expected, rel=0.01), band
 
 
 @pytest.mark.parametrize(
@@ -141,10 +141,10 @@ def test_the_adxl357_pair_names_the_reference_as_the_one_off(registry, readers):
     result = check_twin(load_pair(DATA / "DAQ12006_000005.IDE", "adxl357", readers=readers),
                         registry.sensor("adxl357"))  # fmt: skip
     k = result.calibration
-    assert k["static_g"] == pytest.approx(static, abs=0.005)  # the aligned overlap's mean
-    assert 1.5 < k["tone_gain"] < 1.75 and k["reference_off"]
-    assert not any(f["judgeable"] for f in result.floors)
-    assert all(f["reference_ug"] > f["device_ug"] for f in result.floors)
+    assert k.static_g == pytest.approx(static, abs=0.005)  # the aligned overlap's mean
+    assert 1.5 < k.tone_gain < 1.75 and k.reference_off
+    assert not any(f.judgeable for f in result.floors)
+    assert all(f.reference_ug > f.device_ug for f in result.floors)
 
 
 def test_a_pair_at_rest_keeps_its_axes_as_mounted(registry, readers):
@@ -153,6 +153,6 @@ def test_a_pair_at_rest_keeps_its_axes_as_mounted(registry, readers):
     pair = load_pair(DATA / "XS5E25D40.IDE", "adxl357", readers=readers)
     result = check_twin(pair, registry.sensor("adxl357"))
     a = result.alignment
-    assert not a["rotation_estimated"]
-    assert np.array_equal(np.array(a["rotation"]), np.eye(3))
-    assert a["correlation"] < 0.5
+    assert not a.rotation_estimated
+    assert np.array_equal(np.array(a.rotation), np.eye(3))
+    assert a.correlation < 0.5

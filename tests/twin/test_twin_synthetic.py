@@ -56,9 +56,9 @@ def test_alignment_recovers_clock_delay_and_rotation(truth):
     base, _, pair = truth
     result = check_twin(pair, base)
     a = result.alignment
-    assert a["clock_error_pct"] == pytest.approx(100 * (RATE / 3200 - 1), abs=1e-9)
-    assert a["delay_s"] * RATE == pytest.approx(2.37, abs=0.05)  # sub-sample
-    assert np.allclose(np.array(a["rotation"]), TRUE_ROTATION, atol=2e-3)
+    assert a.clock_error_pct == pytest.approx(100 * (RATE / 3200 - 1), abs=1e-9)
+    assert a.delay_s * RATE == pytest.approx(2.37, abs=0.05)  # sub-sample
+    assert np.allclose(np.array(a.rotation), TRUE_ROTATION, atol=2e-3)
 
 
 def _signal_bands(result) -> list[dict]:
@@ -68,8 +68,8 @@ def _signal_bands(result) -> list[dict]:
     compared."""
     return [
         b for b in result.bands
-        if b["judgeable"]
-        and b["real_rms_g"] > 100 * 290e-6 * np.sqrt(b["f_upper_hz"] - b["f_lower_hz"])
+        if b.judgeable
+        and b.real_rms_g > 100 * 290e-6 * np.sqrt(b.f_upper_hz - b.f_lower_hz)
     ]  # fmt: skip
 
 
@@ -77,13 +77,13 @@ def test_the_true_profile_scores_zero_and_a_wrong_one_its_gain(truth):
     base, true, pair = truth
     right = _signal_bands(check_twin(pair, true))
     assert len(right) >= 8  # every tone's band
-    assert max(abs(b["error_db"]) for b in right) < 0.05
+    assert max(abs(b.error_db) for b in right) < 0.05
     # the base profile lacks the 5 % gain: its twin is 20 log10(1/1.05) dB low in every band
     expected = 20 * np.log10(1 / (1 + GAIN_PCT / 100))
     wrong = _signal_bands(check_twin(pair, base))
     assert len(wrong) == len(right)
     for band in wrong:
-        assert band["error_db"] == pytest.approx(expected, abs=0.05), band
+        assert band.error_db == pytest.approx(expected, abs=0.05), band
 
 
 def test_fit_recovers_gain_rate_and_noise(truth):
