@@ -8,26 +8,25 @@ of the recording the windows come from (the :class:`FeatureContext` the
 framework hands down: given by the dataset, or an estimate read off the
 spectrum, named as such in the features' metadata).
 
-Columns (docs/features.md, "Order-domain features", has the arithmetic):
+Two sets (docs/features.md, "Order-domain features", has the arithmetic):
+
+``orders``, any machine (it needs only the speed):
 
 - ``A_1X``, ``A_2X``, ``A_3X`` [g]: acceleration RMS in 1x, 2x, 3x +- 0.25 order;
 - ``V_ORD`` [mm/s], ``D_ORD`` [um]: velocity and displacement RMS over 0.4-40
   orders, paper8's V_RMS and D_RMS band (10-1000 Hz) at the paper's Motor-2
   speed (1480 rpm: 0.41-40.5 orders) carried over to orders;
-- ``ENV_1X``, ``ENV_BPFO``, ``ENV_BPFI``, ``ENV_BSF`` [g]: the envelope of the
-  signal above 500 Hz (to Nyquist), its spectrum read in orders: at 1x, and the
-  first three harmonics of BPFO, BPFI and 2 x BSF (a ball defect meets both
-  races once per spin revolution) of the bearing nearest the channel.
+- ``ENV_1X`` [g]: the envelope of the signal above 500 Hz (to Nyquist) at 1x.
+
+``bearing-orders``, a machine whose spec lists its bearings: ``ENV_BPFO``,
+``ENV_BPFI``, ``ENV_BSF`` [g], the envelope at the first three harmonics of
+BPFO, BPFI and 2 x BSF (a ball defect meets both races once per spin
+revolution) of the bearing at the channel. Both together: ``orders+bearing-orders``.
 
 Not here: vane pass (no source gives the rig pump's vane count: the synthetic
 pump's 6 is kept without one, docs/data.md) and FTF (about 0.4 order: a 0.64 s
 window resolves 1.56 Hz, 0.13 order at 740 rpm, too coarse to part it from 1x
 and 0 with +-0.25-order bands).
-
-One batched real FFT of the Hann-windowed windows gives the spectrum bands;
-the envelope is the magnitude of the analytic signal of the carrier band (one
-inverse FFT of the same batch) and one more batched FFT gives its spectrum.
-Band sums are one matrix product each: no loop over windows.
 """
 
 from __future__ import annotations
@@ -52,7 +51,7 @@ KIN_ORDERS = (0.4, 40.0)
 CARRIER_LOW_HZ = 500.0
 
 SPECTRUM = ("A_1X", "A_2X", "A_3X", "V_ORD", "D_ORD")
-ENVELOPE = ("ENV_1X", "ENV_BPFO", "ENV_BPFI", "ENV_BSF")
+BEARING = ("ENV_BPFO", "ENV_BPFI", "ENV_BSF")
 
 
 def bearing_of(context: FeatureContext) -> tuple[BearingSpec, str]:
@@ -62,15 +61,15 @@ def bearing_of(context: FeatureContext) -> tuple[BearingSpec, str]:
     where = f"recording {context.recording!r}" if context.recording else "the recording"
     if machine is None:
         raise SDTError(
-            f"feature set 'orders' reads the bearing defect orders of {where}'s machine, and no "
-            f"machine spec is given for it; describe it in machines.toml beside the manifest "
-            f"or [benchmark] machine_specs (docs/severity.md, 'Your machine')"
+            f"feature set 'bearing-orders' reads the bearing defect orders of {where}'s machine, "
+            f"and no machine spec is given for it; describe it in machines.toml beside the "
+            f"manifest or [benchmark] machine_specs (docs/severity.md, 'Your machine')"
         )
     if not machine.bearings:
         raise SDTError(
-            f"machine {machine.name!r} lists no bearings, so feature set 'orders' has no bearing "
+            f"machine {machine.name!r} lists no bearings, so feature set 'bearing-orders' has no "
             f"defect orders for {where}; add its bearings with their geometry (docs/severity.md, "
-            f"'Your machine') or select machines that list them"
+            f"'Your machine'), select machines that list them (--machines), or use 'orders'"
         )
     for bearing in machine.bearings:
         if bearing.channel == context.channel:
@@ -79,9 +78,8 @@ def bearing_of(context: FeatureContext) -> tuple[BearingSpec, str]:
     return first, f"bearing {first.name} ({machine.name}'s first; none listed at the channel)"
 
 
-def order_bands(context: FeatureContext) -> tuple[OrderBand, ...]:
-    """Every band the features read, in orders, at ``context`` (its machine's bearing)."""
-    bearing, which = bearing_of(context)
+def shaft_bands(context: FeatureContext) -> tuple[OrderBand, ...]:
+    """The bands of the ``orders`` set: 1x, 2x, 3x, 0.4-40 orders, the envelope at 1x."""
     low, high = KIN_ORDERS
     bands = [
         OrderBand(name=f"{k}x", features=(f"A_{k}X",), order=k, half_width=HALF_WIDTH)
@@ -99,6 +97,13 @@ def order_bands(context: FeatureContext) -> tuple[OrderBand, ...]:
             carrier_low_hz=CARRIER_LOW_HZ,
         )
     )  # fmt: skip
+    return tuple(bands)
+
+
+def bearing_bands(context: FeatureContext) -> tuple[OrderBand, ...]:
+    """The bands of ``bearing-orders``: 3 harmonics of BPFO, BPFI, 2 x BSF in the envelope."""
+    bearing, which = bearing_of(context)
+    bands = []
     rates = {"BPFO": bearing.bpfo, "BPFI": bearing.bpfi, "BSF": 2 * bearing.bsf}
     for label, rate in rates.items():
         base = f"2 x BSF {bearing.bsf:.4g}" if label == "BSF" else f"{label} {rate:.4g}"
@@ -127,16 +132,71 @@ def _weights(
     return out
 
 
-def _mean_square(x: np.ndarray, window: np.ndarray, per_bin: np.ndarray) -> np.ndarray:
-    """Mean square of each one-sided line of each row of ``x`` (Hann-windowed), g^2."""
+def hann_lines(spectrum: np.ndarray, n: int) -> np.ndarray:
+    """The rfft of the periodic-Hann-windowed rows, from their plain rfft ``spectrum``.
+
+    The periodic Hann window's DFT has three lines: Y_k = X_k / 2 - (X_(k-1) + X_(k+1)) / 4,
+    with X_(-1) = conj(X_1) and X_(n/2+1) = conj(X_(n/2-1)) for real rows: the node
+    windows in frequency and saves an FFT (one transform gives both spectra).
+    """
+    left = np.concatenate([spectrum[:, 1:2].conj(), spectrum[:, :-1]], axis=1)
+    edge = spectrum[:, -2:-1] if n % 2 == 0 else spectrum[:, -1:]
+    right = np.concatenate([spectrum[:, 1:], edge.conj()], axis=1)
+    return 0.5 * spectrum - 0.25 * (left + right)
+
+
+def _power(lines: np.ndarray) -> np.ndarray:
+    return lines.real**2 + lines.imag**2
+
+
+def _features(
+    windows: np.ndarray,
+    fs: float,
+    context: FeatureContext,
+    bands: tuple[OrderBand, ...],
+    spectrum_names: tuple[str, ...],
+    envelope_names: tuple[str, ...],
+) -> np.ndarray:
+    """The columns ``spectrum_names`` then ``envelope_names`` over ``bands``; see :func:`compute`.
+
+    One rfft of the batch gives both the Hann spectrum (:func:`hann_lines`) and the
+    analytic signal of the carrier band (one inverse FFT); one more rfft gives the
+    envelope's spectrum. Band sums are one matrix product each: no loop over windows.
+    """
     import scipy.fft
 
-    spectrum = scipy.fft.rfft(x * window, axis=1, workers=-1)
-    return (spectrum.real**2 + spectrum.imag**2) * per_bin
+    x = np.asarray(windows, dtype=np.float64)
+    x = x - x.mean(axis=1, keepdims=True)
+    n = x.shape[1]
+    freqs = np.fft.rfftfreq(n, d=1.0 / fs)
+    orders = freqs / context.speed_hz
+    sides = np.full(freqs.size, 2.0)
+    sides[0] = 0.0  # DC: the windows are centred
+    if n % 2 == 0:
+        sides[-1] = 1.0
+    per_bin = sides / (n * 0.375 * n)  # N sum w^2; the periodic Hann window: sum w^2 = 3 N / 8
+    plain = scipy.fft.rfft(x, axis=1, workers=-1)
+    columns = []
+    if spectrum_names:
+        weights = _weights(bands, spectrum_names, orders)
+        omega = np.where(freqs > 0, 2 * np.pi * freqs, np.inf)
+        if "V_ORD" in spectrum_names:
+            weights[spectrum_names.index("V_ORD")] *= (G * 1e3 / omega) ** 2  # mm/s
+        if "D_ORD" in spectrum_names:
+            weights[spectrum_names.index("D_ORD")] *= (G * 1e6 / omega**2) ** 2  # um
+        columns.append(np.sqrt((_power(hann_lines(plain, n)) * per_bin) @ weights.T))
+    if envelope_names:
+        carrier = np.where(freqs >= CARRIER_LOW_HZ, sides, 0.0)  # 2 X_k (X_{N/2} once), 0 below
+        envelope = np.abs(scipy.fft.ifft(plain * carrier, n=n, axis=1, workers=-1))
+        envelope -= envelope.mean(axis=1, keepdims=True)
+        lines = hann_lines(scipy.fft.rfft(envelope, axis=1, workers=-1), n)
+        weights = _weights(bands, envelope_names, orders)
+        columns.append(np.sqrt((_power(lines) * per_bin) @ weights.T))
+    return np.column_stack(columns).astype(np.float32)
 
 
 def compute(windows: np.ndarray, fs: float, context: FeatureContext) -> np.ndarray:
-    """Nine order-domain features per window, for a whole batch at once.
+    """Six shaft-order features per window, for a whole batch at once.
 
     Parameters
     ----------
@@ -145,74 +205,66 @@ def compute(windows: np.ndarray, fs: float, context: FeatureContext) -> np.ndarr
     fs
         Sampling rate, Hz.
     context
-        The recording's running speed and machine (its bearing's defect orders).
+        The recording's running speed.
 
     Returns
     -------
     numpy.ndarray
-        float32 (n_windows, 9): A_1X, A_2X, A_3X [g], V_ORD [mm/s], D_ORD [um],
-        ENV_1X, ENV_BPFO, ENV_BPFI, ENV_BSF [g].
+        float32 (n_windows, 6): A_1X, A_2X, A_3X [g], V_ORD [mm/s], D_ORD [um], ENV_1X [g].
 
     Notes
     -----
-    With w the periodic Hann window and X_k the FFT of w x, line k holds the
-    mean square c_k |X_k|^2 / (N sum w^2), c_k = 2 (1 at DC and Nyquist): for a
-    line of amplitude a well inside a band, the band's sum is a^2/2 (Parseval).
-    A feature is the square root of its band's sum, velocity and displacement
-    weighting each line by (g / 2 pi f_k)^2 and (g / (2 pi f_k)^2)^2. The
-    envelope is |z| - mean |z|, z the analytic signal of the lines from 500 Hz
-    to Nyquist (2 X_k there, 0 elsewhere, inverse FFT).
+    With w the periodic Hann window and Y_k the FFT of w x, line k holds the
+    mean square c_k |Y_k|^2 / (N sum w^2), c_k = 2 (1 at the Nyquist line, 0 at
+    DC): for a line of amplitude a well inside a band, the band's sum is a^2/2
+    (Parseval), so a feature of a pure line is its RMS, a / sqrt 2. Velocity and
+    displacement weight each line by (g / 2 pi f_k)^2 and (g / (2 pi f_k)^2)^2.
+    The envelope is |z| - mean |z|, z the analytic signal of the lines from
+    500 Hz to Nyquist (2 X_k there, 0 elsewhere, inverse FFT).
     """
-    import scipy.fft
-    from scipy.signal import windows as tapers
+    return _features(windows, fs, context, shaft_bands(context), SPECTRUM, ("ENV_1X",))
 
-    x = np.asarray(windows, dtype=np.float64)
-    x = x - x.mean(axis=1, keepdims=True)
-    n = x.shape[1]
-    bands = order_bands(context)
-    freqs = np.fft.rfftfreq(n, d=1.0 / fs)
-    orders = freqs / context.speed_hz
-    window = tapers.hann(n, sym=False)
-    sides = np.full(freqs.size, 2.0)
-    sides[0] = 0.0  # DC: the windows are centred
-    if n % 2 == 0:
-        sides[-1] = 1.0
-    per_bin = sides / (n * np.sum(window**2))
 
-    spectrum = _weights(bands, SPECTRUM, orders)
-    omega = np.where(freqs > 0, 2 * np.pi * freqs, np.inf)
-    spectrum[3] *= (G * 1e3 / omega) ** 2  # mm/s
-    spectrum[4] *= (G * 1e6 / omega**2) ** 2  # um
-    values = np.sqrt(_mean_square(x, window, per_bin) @ spectrum.T)
-
-    carrier = np.where(freqs >= CARRIER_LOW_HZ, sides, 0.0)  # 2 X_k (X_{N/2} once), 0 below
-    analytic = scipy.fft.ifft(scipy.fft.rfft(x, axis=1) * carrier, n=n, axis=1, workers=-1)
-    envelope = np.abs(analytic)
-    del analytic
-    envelope -= envelope.mean(axis=1, keepdims=True)
-    env_values = np.sqrt(
-        _mean_square(envelope, window, per_bin) @ _weights(bands, ENVELOPE, orders).T
-    )
-    return np.column_stack([values, env_values]).astype(np.float32)
+def compute_bearing(windows: np.ndarray, fs: float, context: FeatureContext) -> np.ndarray:
+    """Three envelope features per window at the defect orders of the recording's bearing:
+    ENV_BPFO, ENV_BPFI, ENV_BSF [g], each over its first three harmonics (see :func:`compute`)."""
+    return _features(windows, fs, context, bearing_bands(context), (), BEARING)
 
 
 ORDERS = FeatureSetSpec(
     name="orders",
     description="Orders of the running speed: A at 1x/2x/3x, V and D over 0.4-40 orders, "
-    "envelope at 1x and the bearing's BPFO, BPFI, 2xBSF",
+    "the envelope (500 Hz to Nyquist) at 1x",
+    source="docs/features.md, 'Order-domain features' (issue 43); bands in orders are this "
+    "set's stated choices",
+    feature_names=(*SPECTRUM, "ENV_1X"),
+    units=("g", "g", "g", "mm/s", "um", "g"),
+    compute=compute,
+    bands=(FeatureBand(features=("ENV_1X",), low_hz=CARRIER_LOW_HZ),),
+    needs_speed=True,
+    order_bands=shaft_bands,
+    node_ffts=3,  # the window's spectrum (Hann by the 3-line kernel); the analytic signal
+    # (inverse); the envelope's spectrum
+)
+
+BEARING_ORDERS = FeatureSetSpec(
+    name="bearing-orders",
+    description="The envelope (500 Hz to Nyquist) at the bearing's BPFO, BPFI, 2xBSF and "
+    "their harmonics, in orders of the running speed",
     source="docs/features.md, 'Order-domain features' (issue 43); bearing orders from the "
     "machine spec (docs/severity.md); bands in orders are this set's stated choices",
-    feature_names=(*SPECTRUM, *ENVELOPE),
-    units=("g", "g", "g", "mm/s", "um", "g", "g", "g", "g"),
-    compute=compute,
-    bands=(FeatureBand(features=ENVELOPE, low_hz=CARRIER_LOW_HZ),),
+    feature_names=BEARING,
+    units=("g", "g", "g"),
+    compute=compute_bearing,
+    bands=(FeatureBand(features=BEARING, low_hz=CARRIER_LOW_HZ),),
     needs_speed=True,
-    order_bands=order_bands,
-    node_ffts=3,  # spectrum; the analytic signal (inverse); the envelope's spectrum
+    order_bands=bearing_bands,
+    node_ffts=3,  # the window's rfft; the analytic signal (inverse); the envelope's rfft
 )
 
 
 @hookimpl
 def register_features(register: Register) -> None:
-    """Register the `orders` feature set."""
+    """Register the `orders` and `bearing-orders` feature sets."""
     register(ORDERS)
+    register(BEARING_ORDERS)
