@@ -118,12 +118,14 @@ ALLOWED: dict[str, set[str]] = {
         "edge",
         "explore",
         "features",
+        "machine_files",  # sdt features extract --machines (order features)
         "parts",
         "registry",
         "report",
         "severity",
         "signals",
         "specs",
+        "speed",  # sdt features extract --nominal-rpm (order features)
         "twin",
         "validation",
         "verdict",

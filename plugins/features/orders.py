@@ -37,6 +37,7 @@ from sdt_framework import FeatureSetSpec, hookimpl
 from sdt_framework.errors import SDTError
 from sdt_framework.hookspecs import Register
 from sdt_framework.specs import BearingSpec, FeatureBand, FeatureContext, OrderBand
+from sdt_framework.speed import PAD
 
 G = 9.80665  # m/s^2 per g
 #: half width of a shaft-order band, orders: 2 FFT lines of a 0.64 s window at 740 rpm (a choice)
@@ -245,6 +246,7 @@ ORDERS = FeatureSetSpec(
     order_bands=shaft_bands,
     node_ffts=3,  # the window's spectrum (Hann by the 3-line kernel); the analytic signal
     # (inverse); the envelope's spectrum
+    node_speed_pad=PAD,  # a node without a tachometer reads the speed off its spectrum
 )
 
 BEARING_ORDERS = FeatureSetSpec(
@@ -260,6 +262,7 @@ BEARING_ORDERS = FeatureSetSpec(
     needs_speed=True,
     order_bands=bearing_bands,
     node_ffts=3,  # the window's rfft; the analytic signal (inverse); the envelope's rfft
+    node_speed_pad=PAD,
 )
 
 

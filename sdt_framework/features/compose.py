@@ -135,6 +135,7 @@ def compose(parts: Sequence[FeatureSetSpec]) -> FeatureSetSpec:
         needs_speed=needs_speed,
         order_bands=order_bands if any(p.order_bands is not None for p in parts) else None,
         node_ffts=sum(p.node_ffts for p in parts),
+        node_speed_pad=max(p.node_speed_pad for p in parts),  # one speed estimate serves all
     )
 
 

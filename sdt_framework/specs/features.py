@@ -91,6 +91,12 @@ class FeatureSetSpec(Spec):
         ge=1,
         description="FFTs of the window (its length, per axis) a node computes per report.",
     )
+    node_speed_pad: int = Field(
+        default=0,
+        ge=0,
+        description="A node's tachless speed estimate per report: one FFT of this many times "
+        "the window's samples (zero-padded), on one axis; 0: none.",
+    )
 
     @model_validator(mode="before")
     @classmethod
@@ -150,7 +156,7 @@ class FeatureSetSpec(Spec):
     def content_dict(self) -> dict[str, Any]:
         """Behaviour-defining fields plus the compute function's qualified name.
 
-        ``bands`` and ``node_ffts`` are left out: they decide which rates are
+        ``bands``, ``node_ffts`` and ``node_speed_pad`` are left out: they decide which rates are
         refused and what a node's computation costs, not the values computed.
         ``dtype`` is left out: ``bytes_per_value`` follows from it one to one, so
         the hash of a float32 set is the one it had before sets had a dtype;
@@ -161,6 +167,7 @@ class FeatureSetSpec(Spec):
         data.pop("bands", None)
         data.pop("dtype", None)
         data.pop("node_ffts", None)
+        data.pop("node_speed_pad", None)
         if not self.needs_speed:
             data.pop("needs_speed", None)
         data["compute"] = f"{self.compute.__module__}:{self.compute.__qualname__}"
