@@ -115,4 +115,6 @@ def check_order_rates(
             try:
                 check_order_bands(feature_set, rate, n, context, f"{sensor.name}'s output rate")
             except SDTError as exc:
+                if repr(recording.recording_id) in str(exc):  # named already
+                    raise
                 raise SDTError(f"recording {recording.recording_id!r}: {exc}") from None
