@@ -116,3 +116,12 @@ def test_bearing_orders_on_a_machine_listing_no_bearings_is_refused() -> None:
     context = FeatureContext(2075 / 60, machine=rig_machines()["Motor-4"], recording="r1")
     with pytest.raises(SDTError, match=r"^machine 'Motor-4' lists no bearings, so feature set "):
         extract(x, FS, BEARING_ORDERS, context=context)
+
+
+def test_the_api_takes_the_set_by_name_with_its_context() -> None:
+    from sdt_framework.api import extract as api_extract
+
+    x = 0.3 * np.sin(2 * np.pi * 2 * 1480 / 60 * T)
+    table = api_extract(x, FS, "orders", context=FeatureContext(1480 / 60, "given: test"))
+    assert table.feature_set == "orders" and table.speed == "1480 rpm (24.67 Hz; given: test)"
+    assert np.median(table.values[:, 1]) == pytest.approx(0.3 / np.sqrt(2), rel=1e-3)
