@@ -22,7 +22,7 @@ from .errors import ArgumentTypeError
 from .features import FeatureTable, resolve_feature_set
 from .features import extract as _extract
 from .features.windowing import SETTLE_S, WINDOW_S
-from .specs import FeatureSetSpec, SensorSpec, Spec
+from .specs import FeatureContext, FeatureSetSpec, SensorSpec, Spec
 
 __all__ = ["degrade", "extract", "resolve"]
 
@@ -104,7 +104,9 @@ def extract(
     window_s: float = WINDOW_S,
     settle_s: float = SETTLE_S,
     label: str = "",
+    context: FeatureContext | None = None,
 ) -> FeatureTable:
-    """:func:`sdt_framework.features.extract`, ``feature_set`` also a name (``"paper8"``)."""
+    """:func:`sdt_framework.features.extract`, ``feature_set`` also a name (``"paper8"``);
+    ``context`` the recording's speed for a set in orders (``"orders"``)."""
     spec = resolve(FeatureSetSpec, feature_set, "feature_set")
-    return _extract(x, fs, spec, window_s=window_s, settle_s=settle_s, label=label)
+    return _extract(x, fs, spec, window_s=window_s, settle_s=settle_s, label=label, context=context)

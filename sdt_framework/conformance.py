@@ -30,7 +30,17 @@ import numpy as np
 from .errors import SDTError, validation_summary
 from .parts import PartSpec, all_modes, resolve
 from .registry import Registry, build_registry, load_entry_point
-from .specs import ClassifierSpec, DatasetSpec, FeatureSetSpec, ReaderSpec, SensorSpec, Spec
+from .specs import (
+    BearingSpec,
+    ClassifierSpec,
+    DatasetSpec,
+    FeatureContext,
+    FeatureSetSpec,
+    MachineSpec,
+    ReaderSpec,
+    SensorSpec,
+    Spec,
+)
 from .stages import StageContext, StageSpec
 
 __all__ = ["ConformanceError", "check_plugin", "check_spec"]
@@ -110,13 +120,27 @@ def _check_error_terms(spec: PartSpec) -> None:
         _fail(spec, "has error terms, but no mode turns any of them on")
 
 
+def _probe_context() -> FeatureContext:
+    """A recording's context for a set working in orders: 1500 rpm, a probe machine with
+    one deep-groove bearing at the channel (a made-up geometry: the check exercises the
+    extraction path, it reads no real machine)."""
+    bearing = BearingSpec(
+        name="probe", balls=8, ball_mm=10.0, pitch_mm=50.0, channel="ch1", faults=()
+    )
+    machine = MachineSpec(name="probe", shaft_rpm=1500.0, bearings=(bearing,))
+    return FeatureContext(speed_hz=25.0, speed_from="conformance probe", machine=machine,
+                          channel="ch1", recording="probe")  # fmt: skip
+
+
 def _check_feature_set(spec: FeatureSetSpec) -> None:
     # Through the real extraction path: windowing, centring, output validation.
     from .features import extract
 
     signal = np.random.default_rng(0).normal(size=(2, 4800))  # 2 x 1.5 s at 3200 Hz
     try:
-        table = extract(signal, 3200.0, spec)
+        table = extract(
+            signal, 3200.0, spec, context=_probe_context() if spec.needs_speed else None
+        )
     except SDTError as exc:
         raise ConformanceError(f"{exc} (plugin {spec.plugin!r})") from None
     if table.values.shape != (4, len(spec.feature_names)):  # 2 windows per acquisition

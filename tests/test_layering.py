@@ -137,12 +137,14 @@ ALLOWED: dict[str, set[str]] = {
         "inputs",
         "io",
         "labels",
+        "machine_files",  # sdt features extract --machines (order features)
         "parts",
         "registry",
         "report",
         "severity",
         "signals",
         "specs",
+        "speed",  # sdt features extract --nominal-rpm (order features)
         "twin",
         "units",
         "validation",

@@ -19,7 +19,9 @@ with its size and modification time kept. A failure is never cached. A
 corrupt entry (truncated, not an archive, wrong arrays) or one whose contents
 no longer match their checksum (:mod:`.feature_cache`) is discarded and
 recomputed, and named in a note the orchestrator shows as a warning (workers
-cannot print reliably: on Dask their output goes to the worker's log).
+cannot print reliably: on Dask their output goes to the worker's log). A feature
+set in orders of the running speed is handed the recording's context (speed,
+machine, channel: :mod:`.feature_context`), which enters the cache key.
 """
 
 from __future__ import annotations
@@ -27,7 +29,6 @@ from __future__ import annotations
 import hashlib
 import json
 import time
-import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -35,11 +36,11 @@ import numpy as np
 
 from ..chain import compile_chain
 from ..chain.shared import SharedPrefix, prefix_key
-from ..data.cache import CORRUPT_ENTRY_ERRORS, CacheEntryWarning
+from ..data.cache import CORRUPT_ENTRY_ERRORS
 from ..data.recording import Recording
 from ..features import extract
 from ..seeding import derive_seed
-from ..specs import FeatureSetSpec, SensorSpec
+from ..specs import FeatureContext, FeatureSetSpec, SensorSpec
 from ..stages import StageSpec, draw_unit, has_tolerances, is_random, uses_node
 from .feature_cache import (
     CachedBlock,
@@ -48,6 +49,7 @@ from .feature_cache import (
     source_states,
     write_entry,
 )
+from .job_input import open_noting
 
 __all__ = ["FeatureBlock", "FeatureJob", "RecordingFeatures", "featurise_recording", "noise_seed"]
 
@@ -98,6 +100,8 @@ class FeatureJob:
     #: the specs of the stages the sensors' tolerances name, which a drawn unit adds and binds
     #: here: a worker process has no registry of its own
     stages: tuple[StageSpec, ...] = ()
+    #: a feature set in orders of the running speed: the recording's speed, machine, channel
+    context: FeatureContext | None = None
 
 
 def noise_seed(sensor: SensorSpec, seed: int, repeat: int, recording_id: str) -> int | None:
@@ -123,6 +127,8 @@ def _key(
     }
     if _needs_node(sensor, job):  # the other axes' samples enter the output
         parts["node"] = [[r.metadata(), states[r.source]] for r in job.node]
+    if job.context is not None and job.feature_set.needs_speed:  # speed and bearings enter
+        parts["context"] = job.context.content()
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()
 
 
@@ -137,39 +143,6 @@ def _cache_path(job: FeatureJob, key: str) -> Path | None:
     return Path(job.cache_dir) / "features" / key[:2] / f"{key}.npz"
 
 
-def _open(job: FeatureJob) -> SharedPrefix:
-    """The job's recording, read, with its node's other axes (the plan gives them only
-    when a sensor reads them)."""
-    rec = job.recording
-    label = f"{rec.source} ({rec.recording_id})"
-    others = None
-    if job.node:
-        others = {axis: r.load() for axis, r in zip(_other_axes(job), job.node, strict=True)}
-    return SharedPrefix(rec.load(), rec.sampling_rate_hz, label=label, other_axes=others)
-
-
-def _open_noting(job: FeatureJob, notes: list[str]) -> SharedPrefix:
-    """:func:`_open`, with the cache entries discarded on the way added to ``notes``.
-
-    A worker's warnings would reach only its own stderr (raw, with a source
-    line) or a Dask worker's log; as notes they reach the user as one line.
-    """
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", CacheEntryWarning)
-        shared = _open(job)
-    for item in caught:
-        if issubclass(item.category, CacheEntryWarning):
-            notes.append(str(item.message))
-        else:  # not ours to reword: issued again as it was
-            warnings.warn_explicit(item.message, item.category, item.filename, item.lineno)
-    return shared
-
-
-def _other_axes(job: FeatureJob) -> list[str]:
-    """The node's other two axes, in the order of ``job.node``."""
-    return sorted({"x", "y", "z"} - {job.axis})
-
-
 def _compute(
     shared: SharedPrefix, job: FeatureJob, sensor: SensorSpec, chain_seed: int | None
 ) -> CachedBlock:
@@ -177,7 +150,8 @@ def _compute(
     own = "the file's rate (its header's, or the manifest's sampling_rate_hz)"
     where = own if fs_out == shared.fs else f"{sensor.name}'s output rate"  # for a band error
     table = extract(degraded, fs_out, job.feature_set, window_s=job.window_s,
-                    settle_s=job.settle_s, label=shared.label, rate_from=where)  # fmt: skip
+                    settle_s=job.settle_s, label=shared.label, rate_from=where,
+                    context=job.context)  # fmt: skip
     at_full_scale = 0
     if sensor.requantise and sensor.full_scale_g is not None:  # clipped samples sit there
         at_full_scale = int(np.count_nonzero(np.abs(degraded) >= sensor.full_scale_g))
@@ -256,7 +230,7 @@ def featurise_recording(job: FeatureJob) -> RecordingFeatures:
                     path.unlink(missing_ok=True)
             if arrays is None:
                 if shared is None:
-                    shared = _open_noting(job, out.notes)
+                    shared = open_noting(job.recording, job.node, job.axis, out.notes)
                 arrays = _compute(shared, job, sensor, chain_seed)
                 source = "computed"
                 if path is not None:

@@ -28,10 +28,11 @@ from ..data.speed import select_speeds
 from ..errors import SDTError
 from ..features import resolve_feature_set
 from ..registry import Registry
-from ..specs import ClassifierSpec, FeatureSetSpec, MachineSpec, SensorSpec
+from ..specs import ClassifierSpec, FeatureContext, FeatureSetSpec, MachineSpec, SensorSpec
 from ..stages import StageSpec
 from ..stages.units import drawn_stages
 from .config import BenchmarkConfig
+from .feature_context import check_order_rates, feature_contexts
 from .lengths import check_lengths
 from .machines import benchmark_machines
 from .node_samples import Node, resolve_nodes
@@ -68,6 +69,9 @@ class Plan:
     stages: dict[str, StageSpec] = field(default_factory=dict)
     #: the machines (speed, bearings, zone table): the dataset's, the config's over them
     machines: dict[str, MachineSpec] = field(default_factory=dict)
+    #: a feature set in orders: recording id -> its speed, machine, channel; notes on the speeds
+    contexts: dict[str, FeatureContext] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
 
     def run_groups(self) -> list[tuple[Transfer, bool]]:
         """(pair, is a transfer) of every group of runs: each sensor trained and tested on
@@ -159,6 +163,9 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
             f"test run of every class: add runs, or give an allocation with --allocation"
         )
     check_lengths(recordings, sensors, config.window_s, config.settle_s)
+    specs = benchmark_machines(config, dataset)  # a bad machine file: one line, before any run
+    recordings, contexts, notes = feature_contexts(feature_set, recordings, specs)
+    check_order_rates(feature_set, recordings, contexts, sensors, config.window_s)
     users = node_sensors(sensors, registry)
     nodes = find_nodes(recordings, everything, config.axes, users) if users else {}
     if config.nodes and config.sample != "node":
@@ -189,7 +196,9 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
         transfers,
         sample_nodes,
         _unit_stages(sensors, registry) if config.units is not None else {},
-        benchmark_machines(config, dataset),  # a bad machine file: one line, before any run
+        specs,
+        contexts,
+        notes,
     )
 
 

@@ -108,6 +108,8 @@ def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
         }
         if plan.config.units is not None:  # left out otherwise: features.parquet stays as it was
             meta["unit"] = b.unit
+        if plan.feature_set.needs_speed:  # text: the speed order features were computed at
+            meta["speed"] = plan.contexts[rec.recording_id].describe_speed()
         for i, (name, value) in enumerate(meta.items()):
             frame.insert(i, name, value)
         frame.insert(len(meta), "acquisition", b.acquisition)
@@ -191,6 +193,7 @@ def _run(
             config.units,
             plan.nodes.get(r.recording_id, ()),
             tuple(plan.stages.values()),
+            plan.contexts.get(r.recording_id),
         )
         for r in plan.recordings
     ]

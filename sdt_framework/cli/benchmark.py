@@ -116,7 +116,7 @@ def benchmark(
         "(config keys axes and nodes in \\[benchmark]).",
     ),
     classifiers: str | None = typer.Option(None, "--classifiers", help="Comma-separated."),
-    features: str | None = typer.Option(None, "--features", help="Feature set, e.g. paper8."),
+    features: str | None = typer.Option(None, "--features", help="Feature set: paper8, orders."),
     feature_dtype: str | None = typer.Option(
         None, "--feature-dtype", help="Round features to float16 or float32 before classifying."
     ),

@@ -7,7 +7,8 @@ work rather than found out at its end:
 - ``--scheduler`` without ``--backend dask``: the address is not used;
 - no reference among the sensors: ``sdt compare`` and the report's Verdict and
   Delta sections compare every sensor with the reference, and would find
-  nothing to compare with only once every run is done.
+  nothing to compare with only once every run is done;
+- the plan's notes: speeds read off the spectrum for a feature set in orders.
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ __all__ = ["start_lines"]
 def start_lines(plan: Plan, size: Estimate) -> list[tuple[str, str]]:
     """``(label, message)`` of each line to print before the run (``note:``, ``warning:``)."""
     config = plan.config
-    lines: list[tuple[str, str]] = []
+    lines: list[tuple[str, str]] = [("note:", note) for note in plan.notes]
     local = config.backend == "local" or not config.scheduler
     if local and config.jobs != -1:  # -1 (all cores, the default) is never more than helps
         note = pool_note(config.jobs, max(len(plan.recordings), size.runs_to_do))

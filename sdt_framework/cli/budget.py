@@ -116,7 +116,9 @@ def budget(
     source; average current and battery life in years, an estimate under
     typical figures, capped at the cell's rated shelf life.
 
-    One report is one window's feature vector on every axis. For each data rate
+    One report is one window's feature vector on every axis; with --sensor, the
+    microcontroller's time is the feature set's FFTs per axis (paper8: one;
+    orders: three, plus one zero-padded FFT for the tachless speed estimate). For each data rate
     of the region: whether it fits one uplink (else how many), time on air
     (Semtech SX127x formula), the shortest interval the duty cycle allows,
     airtime and transmit energy per day. Formulas and sources: docs/edge.md.
@@ -128,6 +130,8 @@ def budget(
       sdt budget --dtype float16 --region US915 --json
 
       sdt budget --sensor adxl345 --battery 2xAA --interval 10min
+
+      sdt budget --sensor adxl345 --battery 2xAA --features orders   # order features' FFTs
     """
     from ..edge import (
         DEFAULT_RADIO,

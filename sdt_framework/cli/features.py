@@ -11,6 +11,7 @@ import typer
 from ..errors import SDTError
 from .chain import FS_HELP, FULL_SCALE_HELP, SIGNAL_HELP
 from .common import console, print_json, registry, table
+from .features_speed import SPEED_HELP, extract_context
 from .guards import OVERWRITE_HELP
 
 app = typer.Typer(help="List feature sets and extract features.", no_args_is_help=True)
@@ -83,6 +84,17 @@ def extract_features(
         float, typer.Option("--settle-s", help="Settling discard per acquisition, s.")
     ] = 0.1,
     overwrite: Annotated[bool, typer.Option("--overwrite", help=OVERWRITE_HELP)] = False,
+    speed_rpm: Annotated[
+        float | None, typer.Option("--speed-rpm", help=SPEED_HELP["speed"])
+    ] = None,
+    nominal_rpm: Annotated[
+        float | None, typer.Option("--nominal-rpm", help=SPEED_HELP["nominal"])
+    ] = None,
+    machines: Annotated[
+        Path | None, typer.Option("--machines", help=SPEED_HELP["machines"])
+    ] = None,
+    machine: Annotated[str | None, typer.Option("--machine", help=SPEED_HELP["machine"])] = None,
+    channel: Annotated[str | None, typer.Option("--channel", help=SPEED_HELP["channel"])] = None,
 ) -> None:
     """Extract features: one row per window, with acquisition and window index.
 
@@ -108,6 +120,9 @@ def extract_features(
       sdt features extract healthy_adxl345.npy --fs 3200 --set paper8 --out features.parquet
 
       sdt features extract tests/data/endaq/SSX_Data.IDE --signal 8:x --out ide_features.csv
+
+      sdt features extract healthy_adxl345.npy --fs 3200 --set orders --speed-rpm 1480 \\
+        --out orders.csv   # in orders of the running speed; --nominal-rpm 1480 estimates it
     """
     from ..features import extract, resolve_feature_set, write_feature_table
     from ..signals import FEATURES_BYTES_PER_SAMPLE
@@ -129,9 +144,14 @@ def extract_features(
             input_path, registry(ctx).signal_readers(), FEATURES_BYTES_PER_SAMPLE, advice,
             signal=signal, rate_hz=fs, options={"full_scale_g": full_scale_g},
         )  # fmt: skip
+        samples = opened.read_g()
+        context = extract_context(
+            spec, samples, opened.rate_hz, opened.label, speed_rpm=speed_rpm,
+            nominal_rpm=nominal_rpm, machines=machines, machine_name=machine, channel=channel,
+        )  # fmt: skip
         result = extract(
-            opened.read_g(), opened.rate_hz, spec, window_s=window_s, settle_s=settle_s,
-            label=opened.label,
+            samples, opened.rate_hz, spec, window_s=window_s, settle_s=settle_s,
+            label=opened.label, context=context,
         )  # fmt: skip
         write_feature_table(result, out)
     n_acq = len(set(result.acquisition.tolist()))
@@ -144,3 +164,5 @@ def extract_features(
         highlight=False,
         soft_wrap=True,
     )
+    if result.speed:
+        console.print(f"speed: {result.speed}", markup=False, highlight=False, soft_wrap=True)

@@ -11,7 +11,7 @@ current throughout. Per report, with I the supply current of each consumer
     accelerometer measuring     Q = I_meas (t_on + W)
     accelerometer standby       Q = I_stby (T - t_on - W)
     microcontroller acquiring   Q = I_acq (t_on + W)        (awake serving the FIFO)
-    microcontroller features    Q = I_mcu t_mcu,  t_mcu = axes t_FFT(N)
+    microcontroller features    Q = I_mcu t_mcu,  t_mcu = axes F t_FFT(N) + t_FFT(P N)
     radio transmit              Q = I_tx ToA                (all k uplinks, :mod:`.lora`)
     radio RX1, RX2              Q = k I_rx n_sym T_sym(window's data rate)
     regulator quiescent         Q = I_q T
@@ -199,14 +199,23 @@ def node_budget(
     )
 
 
+def _ffts(t, axes: int) -> str:
+    """``"2048 points x 3 axes"``; for a set in orders, its FFTs and the speed estimate's."""
+    each = f"{t.samples} points x {axes} axes"
+    if t.ffts > 1:
+        each = f"{t.ffts} FFTs of {each}"
+    if t.speed_pad:
+        each += f" + one of {t.speed_pad * t.samples} points ({t.speed_pad}x zero-padded: speed)"
+    return each
+
+
 def _stages(s: NodeSettings, t, i_meas: float, meas_src: str, i_stby, stby_src: str) -> list[Stage]:
     """One :class:`Stage` per consumer, in the order of the module notes."""
     radio, k = t.radio, t.uplinks
     mcu_src = (
         "user setting"
         if s.mcu_time_s is not None
-        else f"{nd.FFT_REFERENCE[2]}, scaled to {t.samples} points x {s.axes} axes at "
-        f"{nd.MCU_CLOCK_HZ / 1e6:g} MHz"
+        else f"{nd.FFT_REFERENCE[2]}, scaled to {_ffts(t, s.axes)} at {nd.MCU_CLOCK_HZ / 1e6:g} MHz"
     )
     if s.mcu_current_a == nd.MCU_CURRENT_A:
         mcu_src += f"; current: {nd.MCU_SOURCE}"

@@ -1,8 +1,10 @@
 """When a node is busy in one reporting interval, and whether the interval allows it.
 
 One report: the accelerometer turns on and records a window of W seconds on
-every axis, the microcontroller computes the features (an FFT of the window
-per axis, :func:`fft_time_s`), the radio sends the report in k uplinks of the
+every axis, the microcontroller computes the features (the feature set's
+``node_ffts`` FFTs of the window per axis, :func:`fft_time_s`, plus, for a set
+in orders of the running speed, one FFT zero-padded ``node_speed_pad`` times on
+one axis: the tachless speed estimate), the radio sends the report in k uplinks of the
 chosen data rate (k > 1 when the report is larger than the rate's payload
 limit) and listens in RX1 and RX2 after each uplink. :func:`node_timing`
 gives those times and refuses an interval the node cannot keep: shorter than
@@ -54,6 +56,9 @@ class Timing:
     t_rx2: float
     rx2_sf: int
     rx2_bw: float
+    #: the feature set's FFTs of the window per axis, and its speed estimate's zero-padding
+    ffts: int = 1
+    speed_pad: int = 0
 
 
 def fft_time_s(samples: int, clock_hz: float = nd.MCU_CLOCK_HZ) -> float:
@@ -101,7 +106,11 @@ def node_timing(
     plan = region_named(s.region)
     rate = next(r for r in plan.data_rates if r.name == row.data_rate)
     samples = max(1, round(s.window_s * rate_hz))
-    t_mcu = s.mcu_time_s if s.mcu_time_s is not None else s.axes * fft_time_s(samples)
+    ffts, pad = feature_set.node_ffts, feature_set.node_speed_pad
+    speed_s = fft_time_s(pad * samples) if pad else 0.0  # the tachless estimate, one axis
+    t_mcu = s.mcu_time_s if s.mcu_time_s is not None else s.axes * ffts * fft_time_s(samples)
+    if s.mcu_time_s is None:
+        t_mcu += speed_s
     t_acq = turn_on_s + s.window_s
     rx1_bw = 500e3 if plan.name == "US915" else 125e3
     t_rx1 = s.rx_symbols * symbol_time_s(rate.sf, rx1_bw)
@@ -126,5 +135,5 @@ def node_timing(
         )
     return Timing(
         plan.name, row, rate, budget.radio, samples, turn_on_s, t_acq, t_mcu,
-        row.messages_per_report, t_rx1, t_rx2, rx2_sf, rx2_bw,
+        row.messages_per_report, t_rx1, t_rx2, rx2_sf, rx2_bw, ffts, pad,
     )  # fmt: skip

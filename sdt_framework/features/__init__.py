@@ -7,8 +7,9 @@ cut_windows, Windows
 extract, FeatureExtractor, FeatureTable
     Validate a signal, window and centre it, compute a feature set, check the result;
     the feature set a spec (``sdt_framework.api.extract`` also takes its name, "paper8").
-check_bands, check_feature_output
-    The checks extraction runs: declared frequency bands non-empty at the rate; compute output.
+check_bands, check_order_bands, check_feature_output
+    The checks extraction runs: declared frequency bands non-empty at the rate; order bands
+    (a set in orders of the running speed) below Nyquist at the recording's speed; output.
 feature, Feature
     Decorator turning ``f(windows, fs) -> (n_windows,)`` into a registrable feature.
 compose, resolve_feature_set
@@ -21,7 +22,7 @@ read_feature_table, write_feature_table
 
 from __future__ import annotations
 
-from .checks import check_bands, check_feature_output
+from .checks import check_bands, check_feature_output, check_order_bands
 from .compose import ComposedFeatureSetSpec, compose, resolve_feature_set
 from .extract import FeatureExtractor, extract
 from .quantise import quantise_features
@@ -39,6 +40,7 @@ __all__ = [
     "Windows",
     "check_bands",
     "check_feature_output",
+    "check_order_bands",
     "compose",
     "cut_windows",
     "extract",

@@ -5,7 +5,11 @@ every frequency band the feature set declares (:class:`~sdt_framework.specs.Feat
 holds at least one FFT bin of a window at the given rate (SPEC section 3: paper8's
 spectrum runs from 10 Hz to Nyquist and its V_RMS, D_RMS from 10 to 1000 Hz; at
 fs = 15 Hz both are empty and the features would silently be 0). After compute:
-shape (n_windows, n_features), numeric, finite, cast to float32.
+shape (n_windows, n_features), numeric, finite, cast to float32. A set working
+in orders of the running speed gets the same check for its order bands at the
+recording's speed (:func:`check_order_bands`): a band above the Nyquist frequency
+of the rate, or holding no FFT bin, is refused naming the band, its order, the
+speed and where the rate comes from.
 """
 
 from __future__ import annotations
@@ -14,9 +18,9 @@ import numpy as np
 
 from ..arguments import real_array
 from ..errors import SDTError
-from ..specs import FeatureSetSpec
+from ..specs import FeatureContext, FeatureSetSpec
 
-__all__ = ["check_bands", "check_feature_output", "check_signal"]
+__all__ = ["check_bands", "check_feature_output", "check_order_bands", "check_signal"]
 
 
 def check_signal(x: object) -> np.ndarray:
@@ -83,6 +87,69 @@ def check_bands(
             f"{window_length}-sample windows), so those features would be 0; {fix} "
             f"(docs/features.md, Windows); check {rate_from}"
         )
+
+
+def check_order_bands(
+    spec: FeatureSetSpec,
+    fs: float,
+    window_length: int,
+    context: FeatureContext | None,
+    rate_from: str = RATE_GIVEN,
+) -> None:
+    """Refuse a set needing the speed without one, and an order band the rate cannot hold.
+
+    At ``context.speed_hz`` each band of ``spec.order_bands(context)`` spans
+    [low, high] x speed Hz: it must end at or below the Nyquist frequency fs/2
+    (a band of the envelope of the carrier band [c, fs/2]: at or below its
+    width fs/2 - c) and hold at least one bin of a real FFT of ``window_length``
+    samples.
+
+    Raises
+    ------
+    SDTError
+        No context for a set that needs one; a band above Nyquist or without a
+        bin (naming the band, its order, the speed, the rate and ``rate_from``).
+    """
+    if not spec.needs_speed:
+        return
+    if context is None:
+        raise SDTError(
+            f"feature set {spec.name!r} works in orders of the running speed and needs the "
+            f"recording's speed: give context=FeatureContext(speed_hz=..., machine=...) "
+            f"(sdt_framework.specs), or run it in a benchmark, which hands each recording's "
+            f"speed down (docs/features.md, Order-domain features)"
+        )
+    if spec.order_bands is None:
+        return
+    nyquist = fs / 2
+    spacing = fs / window_length
+    for band in spec.order_bands(context):
+        low, high = band.edges_hz(context.speed_hz)
+        at = f"at {context.describe_speed()}"
+        if high > nyquist:
+            raise SDTError(
+                f"feature set {spec.name!r}: order band {band.describe()} {at} reaches "
+                f"{high:.4g} Hz, above the Nyquist frequency {nyquist:g} Hz of fs={fs:g} Hz "
+                f"({rate_from}); a rate above {2 * high:.4g} Hz keeps it, or use a feature set "
+                f"without this band"
+            )
+        carrier = band.carrier_low_hz
+        if carrier is not None and high > nyquist - carrier:
+            raise SDTError(
+                f"feature set {spec.name!r}: envelope band {band.describe()} {at} reaches "
+                f"{high:.4g} Hz, above {max(nyquist - carrier, 0):.4g} Hz, the width of its "
+                f"carrier band {carrier:g} Hz to Nyquist at fs={fs:g} Hz ({rate_from}): the "
+                f"envelope holds no modulation faster than that; a rate above "
+                f"{2 * (carrier + high):.4g} Hz keeps it, or use a feature set without this band"
+            )
+        first = np.ceil(low / spacing - 1e-9)
+        if first * spacing > high + 1e-9:
+            raise SDTError(
+                f"feature set {spec.name!r}: order band {band.describe()} {at} spans "
+                f"{low:.4g}-{high:.4g} Hz and holds no FFT bin of a {window_length}-sample "
+                f"window ({spacing:g} Hz apart); use longer windows (--window-s) or check the "
+                f"speed"
+            )
 
 
 def check_feature_output(values: object, n_windows: int, spec: FeatureSetSpec) -> np.ndarray:

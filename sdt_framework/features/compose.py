@@ -2,8 +2,11 @@
 
 A composed set is resolved on demand from registered parts and never
 registered itself (its ``+`` name is reserved for composition). Its compute
-hands the same centred windows to each part, checks each part's output (so an
-error names the part that misbehaved) and concatenates the columns.
+hands the same centred windows to each part (and the recording's context to a
+part working in orders of the running speed), checks each part's output (so an
+error names the part that misbehaved) and concatenates the columns. It needs
+the speed when a part does; its order bands are its parts', and a node computes
+the FFTs of every part (their sum: an upper bound, as two parts may share one).
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ import numpy as np
 from pydantic import Field, field_validator
 
 from ..errors import SDTError
-from ..specs import _NAME, FeatureSetSpec
+from ..specs import _NAME, FeatureContext, FeatureSetSpec, OrderBand
 from .checks import check_feature_output
 
 __all__ = ["ComposedFeatureSetSpec", "compose", "resolve_feature_set"]
@@ -97,13 +100,28 @@ def compose(parts: Sequence[FeatureSetSpec]) -> FeatureSetSpec:
             owner[feature_name] = part.name
     name = SEPARATOR.join(part.name for part in parts)
 
-    def compute(windows: np.ndarray, fs: float) -> np.ndarray:
+    def compute(
+        windows: np.ndarray, fs: float, context: FeatureContext | None = None
+    ) -> np.ndarray:
         n_windows = windows.shape[0]
         return np.concatenate(
-            [check_feature_output(p.compute(windows, fs), n_windows, p) for p in parts], axis=1
+            [
+                check_feature_output(
+                    p.compute(windows, fs, context) if p.needs_speed else p.compute(windows, fs),
+                    n_windows,
+                    p,
+                )
+                for p in parts
+            ],
+            axis=1,
         )
 
+    def order_bands(context: FeatureContext) -> tuple[OrderBand, ...]:
+        return tuple(b for p in parts if p.order_bands is not None for b in p.order_bands(context))
+
     compute.__qualname__ = f"compose[{name}]"
+    order_bands.__qualname__ = f"compose[{name}].order_bands"
+    needs_speed = any(p.needs_speed for p in parts)
     return ComposedFeatureSetSpec(
         name=name,
         description="Composed: "
@@ -114,6 +132,10 @@ def compose(parts: Sequence[FeatureSetSpec]) -> FeatureSetSpec:
         compute=compute,
         parts=parts,
         bands=tuple(band for p in parts for band in p.bands),
+        needs_speed=needs_speed,
+        order_bands=order_bands if any(p.order_bands is not None for p in parts) else None,
+        node_ffts=sum(p.node_ffts for p in parts),
+        node_speed_pad=max(p.node_speed_pad for p in parts),  # one speed estimate serves all
     )
 
 

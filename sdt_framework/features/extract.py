@@ -17,8 +17,14 @@ import numpy as np
 
 from ..arguments import check_rate, check_spec
 from ..errors import SDTError
-from ..specs import FeatureSetSpec
-from .checks import RATE_GIVEN, check_bands, check_feature_output, check_signal
+from ..specs import FeatureContext, FeatureSetSpec
+from .checks import (
+    RATE_GIVEN,
+    check_bands,
+    check_feature_output,
+    check_order_bands,
+    check_signal,
+)
 from .table import FeatureTable
 from .windowing import SETTLE_S, WINDOW_S, cut_windows
 
@@ -49,12 +55,23 @@ class FeatureExtractor:
         self.window_s = window_s
         self.settle_s = settle_s
 
-    def _compute(self, windows: np.ndarray, fs: float) -> object:
-        """The domain part: the feature set's compute on centred float64 windows."""
+    def _compute(
+        self, windows: np.ndarray, fs: float, context: FeatureContext | None = None
+    ) -> object:
+        """The domain part: the feature set's compute on centred float64 windows (with the
+        recording's context for a set that needs the speed)."""
+        if self.feature_set.needs_speed:
+            return self.feature_set.compute(windows, fs, context)
         return self.feature_set.compute(windows, fs)
 
     def extract(
-        self, x: np.ndarray, fs: float, *, label: str = "", rate_from: str = RATE_GIVEN
+        self,
+        x: np.ndarray,
+        fs: float,
+        *,
+        label: str = "",
+        rate_from: str = RATE_GIVEN,
+        context: FeatureContext | None = None,
     ) -> FeatureTable:
         """Features of every window of ``x``.
 
@@ -73,6 +90,10 @@ class FeatureExtractor:
         rate_from
             Where ``fs`` came from, for the message of a rate too low for a band
             (default: the ``--fs`` option).
+        context
+            The recording's running speed, machine and channel, for a feature
+            set that works in orders of the running speed (``needs_speed``);
+            ignored by one that does not.
 
         Returns
         -------
@@ -85,13 +106,15 @@ class FeatureExtractor:
             (a TypeError) ``x`` or ``fs`` of a wrong type.
         SDTError
             A bad signal, or a rate at which a band the feature set declares is
-            empty (paper8: 10 Hz to Nyquist, 10-1000 Hz).
+            empty (paper8: 10 Hz to Nyquist, 10-1000 Hz); for a set needing the
+            speed: no context, or an order band above Nyquist at that speed.
         """
         fs = check_rate(fs)
         try:
             signal = check_signal(x)
             cut = cut_windows(signal, fs, window_s=self.window_s, settle_s=self.settle_s)
             check_bands(self.feature_set, fs, cut.length, rate_from)
+            check_order_bands(self.feature_set, fs, cut.length, context, rate_from)
         except SDTError as exc:
             if not label:
                 raise
@@ -99,7 +122,7 @@ class FeatureExtractor:
         # One vectorised pass: float64 copy, each window minus its own mean.
         centred = cut.data - cut.data.mean(axis=1, keepdims=True, dtype=np.float64)
         try:
-            raw = self._compute(centred, float(fs))
+            raw = self._compute(centred, float(fs), context)
         except SDTError:
             raise
         except Exception as exc:
@@ -116,6 +139,7 @@ class FeatureExtractor:
             fs=float(fs),
             window_length=cut.length,
             settle=cut.settle,
+            speed=context.describe_speed() if context and self.feature_set.needs_speed else "",
         )
 
 
@@ -128,6 +152,7 @@ def extract(
     settle_s: float = SETTLE_S,
     label: str = "",
     rate_from: str = RATE_GIVEN,
+    context: FeatureContext | None = None,
 ) -> FeatureTable:
     """Extract ``feature_set`` from every window of ``x``; see :class:`FeatureExtractor`.
 
@@ -137,4 +162,4 @@ def extract(
     >>> table.to_frame().head()  # doctest: +SKIP
     """
     extractor = FeatureExtractor(feature_set, window_s=window_s, settle_s=settle_s)
-    return extractor.extract(x, fs, label=label, rate_from=rate_from)
+    return extractor.extract(x, fs, label=label, rate_from=rate_from, context=context)

@@ -50,6 +50,10 @@ class FeatureTable:
         Sampling rate of the signal, Hz.
     window_length, settle
         Samples per window and settling samples discarded per acquisition.
+    speed
+        For a set in orders of the running speed: the speed it was computed at and
+        where it comes from (``"1480 rpm (24.67 Hz; given: ...)"``, or an estimate
+        read off the spectrum, named so); empty for any other set.
     """
 
     values: np.ndarray
@@ -61,6 +65,7 @@ class FeatureTable:
     fs: float
     window_length: int
     settle: int
+    speed: str = ""
 
     @property
     def bytes_per_window(self) -> int:
@@ -77,17 +82,22 @@ class FeatureTable:
         frame.insert(0, "acquisition", self.acquisition)
         frame.attrs["units"] = dict(zip(self.names, self.units, strict=True))
         frame.attrs["feature_set"] = self.feature_set
+        if self.speed:
+            frame.attrs["speed"] = self.speed
         return frame
 
     def metadata(self) -> dict[str, object]:
         """What a file needs besides the columns to rebuild this table."""
-        return {
+        meta: dict[str, object] = {
             "feature_set": self.feature_set,
             "fs": self.fs,
             "window_length": self.window_length,
             "settle": self.settle,
             "units": dict(zip(self.names, self.units, strict=True)),
         }
+        if self.speed:  # only a set in orders of the running speed has one
+            meta["speed"] = self.speed
+        return meta
 
 
 def write_feature_table(table: FeatureTable, path: str | os.PathLike[str]) -> Path:
@@ -150,4 +160,5 @@ def read_feature_table(path: str | os.PathLike[str]) -> FeatureTable:
         fs=float(meta.get("fs", float("nan"))),
         window_length=int(meta.get("window_length", -1)),
         settle=int(meta.get("settle", -1)),
+        speed=str(meta.get("speed", "")),
     )

@@ -19,7 +19,7 @@ from .base import Spec
 from .classifier import ClassifierSpec
 from .dataset import DatasetSpec
 from .features import DTYPE_BYTES as DTYPE_BYTES
-from .features import FeatureBand, FeatureSetSpec
+from .features import FeatureBand, FeatureContext, FeatureSetSpec, OrderBand
 from .machine import BearingSpec, MachineSpec, OperatingPoint
 from .reader import ReaderSpec
 from .sensor import AXIS_FIELDS as AXIS_FIELDS
@@ -36,9 +36,11 @@ __all__ = [
     "ClassifierSpec",
     "DatasetSpec",
     "FeatureBand",
+    "FeatureContext",
     "FeatureSetSpec",
     "MachineSpec",
     "OperatingPoint",
+    "OrderBand",
     "ReaderSpec",
     "SensorSpec",
     "Spec",

@@ -8,8 +8,9 @@ from typing import Any, ClassVar, Literal
 from pydantic import BaseModel, ConfigDict, Field, model_validator
 
 from .base import Spec
+from .feature_context import FeatureContext, OrderBand
 
-__all__ = ["FeatureBand", "FeatureSetSpec"]
+__all__ = ["FeatureBand", "FeatureContext", "FeatureSetSpec", "OrderBand"]
 
 #: bytes per value of each on-node feature dtype
 DTYPE_BYTES = {"float16": 2, "float32": 4}
@@ -48,7 +49,12 @@ class FeatureSetSpec(Spec):
     """A named set of features computed on a batch of windows.
 
     ``compute(windows, fs)`` takes a float array (n_windows, window_length) and
-    the sampling rate in Hz and returns (n_windows, len(feature_names)).
+    the sampling rate in Hz and returns (n_windows, len(feature_names)). A set
+    that works in orders of the running speed sets ``needs_speed`` and is called
+    ``compute(windows, fs, context)`` with a :class:`FeatureContext` (the
+    recording's speed, machine and channel); its ``order_bands(context)`` lists
+    the :class:`OrderBand` s it reads, which the framework checks against the
+    rate's Nyquist frequency before compute.
     """
 
     kind: ClassVar[str] = "feature set"
@@ -70,6 +76,26 @@ class FeatureSetSpec(Spec):
     bands: tuple[FeatureBand, ...] = Field(
         default=(),
         description="Frequency bands the features need; a rate leaving one empty is refused.",
+    )
+    needs_speed: bool = Field(
+        default=False,
+        description="compute(windows, fs, context) takes the recording's FeatureContext.",
+    )
+    order_bands: Callable[[FeatureContext], tuple[OrderBand, ...]] | None = Field(
+        default=None,
+        exclude=True,
+        description="order_bands(context) -> the OrderBands the features read (needs_speed).",
+    )
+    node_ffts: int = Field(
+        default=1,
+        ge=1,
+        description="FFTs of the window (its length, per axis) a node computes per report.",
+    )
+    node_speed_pad: int = Field(
+        default=0,
+        ge=0,
+        description="A node's tachless speed estimate per report: one FFT of this many times "
+        "the window's samples (zero-padded), on one axis; 0: none.",
     )
 
     @model_validator(mode="before")
@@ -109,6 +135,8 @@ class FeatureSetSpec(Spec):
         for band in self.bands:
             if not set(band.features) <= set(self.feature_names):
                 raise ValueError(f"band {band.describe()} names unknown features {band.features}")
+        if self.order_bands is not None and not self.needs_speed:
+            raise ValueError("order_bands are read at the recording's speed: set needs_speed")
         return self
 
     @property
@@ -128,13 +156,22 @@ class FeatureSetSpec(Spec):
     def content_dict(self) -> dict[str, Any]:
         """Behaviour-defining fields plus the compute function's qualified name.
 
-        ``bands`` is left out: it decides which rates are refused, not the
-        values computed. ``dtype`` is left out: ``bytes_per_value`` follows from
-        it one to one, so the hash of a float32 set is the one it had before sets
-        had a dtype. Both keep feature caches and results folders valid.
+        ``bands``, ``node_ffts`` and ``node_speed_pad`` are left out: they decide which rates are
+        refused and what a node's computation costs, not the values computed.
+        ``dtype`` is left out: ``bytes_per_value`` follows from it one to one, so
+        the hash of a float32 set is the one it had before sets had a dtype;
+        ``needs_speed`` is kept only when set, so a set without it hashes as
+        before. All keep feature caches and results folders valid.
         """
         data = super().content_dict()
         data.pop("bands", None)
         data.pop("dtype", None)
+        data.pop("node_ffts", None)
+        data.pop("node_speed_pad", None)
+        if not self.needs_speed:
+            data.pop("needs_speed", None)
         data["compute"] = f"{self.compute.__module__}:{self.compute.__qualname__}"
+        if self.order_bands is not None:
+            bands = self.order_bands
+            data["order_bands"] = f"{bands.__module__}:{bands.__qualname__}"
         return data

@@ -221,3 +221,26 @@ def test_default_microcontroller_stage_by_hand(registry, paper8):
     assert mcu.time_s == pytest.approx(3 * 292680 / 80e6)  # 10.98 ms at 80 MHz
     assert mcu.current_a == pytest.approx(91e-6 * 80)  # 7.28 mA
     assert mcu.charge_c == pytest.approx(3 * 292680 * 91e-12)  # 79.9 uC
+
+
+def test_a_set_in_orders_costs_its_ffts_and_the_speed_estimate(sensor, paper8, registry):
+    """orders: 3 FFTs of the window per axis and one 8x zero-padded FFT for the speed."""
+    orders = registry.feature_set("orders")
+    settings = NodeSettings(interval_s=600, window_s=0.64, axes=3)
+    battery = cell("2xAA")
+    t_mcu = {
+        spec.name: next(
+            s.time_s for s in node_budget(sensor, spec, battery, settings).stages
+            if s.consumer == "microcontroller features"
+        )
+        for spec in (paper8, orders)
+    }  # fmt: skip
+
+    # node.toml: arm_cfft_f32, 2048 points, 2439 us at 120 MHz; the node runs at 80 MHz and
+    # an FFT of N points takes N log2 N / (2048 x 11) of that
+    def fft(n: int) -> float:
+        return 2439e-6 * 120 / 80 * n * np.log2(n) / (2048 * 11)
+
+    n = 2048  # 0.64 s at 3200 Hz
+    assert t_mcu["paper8"] == pytest.approx(3 * fft(n), rel=1e-9)  # 11.0 ms, as before
+    assert t_mcu["orders"] == pytest.approx(3 * 3 * fft(n) + fft(8 * n), rel=1e-9)  # 70.2 ms
