@@ -14,13 +14,14 @@ from pathlib import Path
 from typing import Any, Literal
 
 import tomli_w
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
 
 from ..errors import SpecFileError, one_line
 from ..io import atomic_write_text
 from ..machine_files import machines_from_tables
 from ..toml_files import read_toml, validate_file
 from .config_paths import relative_to, resolve_written, written_by_sdt
+from .speed_split import SPEED_TRANSFER, SpeedTransfer
 
 __all__ = [
     "SCENARIOS",
@@ -106,8 +107,16 @@ class BenchmarkConfig(BaseModel):
     settle_s: float = Field(
         default=0.1, ge=0, le=3600, description="Settling discarded per acquisition, s."
     )
-    scenarios: list[Literal["forward", "backward", "interpolation"]] = Field(
-        default_factory=lambda: list(SCENARIOS), description="Generalisation scenarios."
+    scenarios: list[Literal["forward", "backward", "interpolation", "speed-transfer"]] = Field(
+        default_factory=lambda: list(SCENARIOS),
+        description="Generalisation scenarios; speed-transfer: train at other speeds than "
+        "the test runs' (leave one speed out, or the speed_transfer pair).",
+    )
+    speed_transfer: SpeedTransfer | None = Field(
+        default=None,
+        description="The speed-transfer scenario's pair, e.g. {train = [100], test = [75]} "
+        "(default: leave one speed out), and split: the rule splitting each speed's runs "
+        "(forward, backward, interpolation; all: every run, no within-speed arm).",
     )
     allocation: str | None = Field(
         default=None, description="CSV/TOML allocation table replacing the scenario rule."
@@ -188,6 +197,17 @@ class BenchmarkConfig(BaseModel):
             raise ValueError("must be a positive number of processes, or -1 for all cores")
         return value
 
+    @field_validator("speed_transfer")
+    @classmethod
+    def _speed_pair(cls, value: SpeedTransfer | None, info: ValidationInfo) -> Any:
+        scenarios = info.data.get("scenarios", SCENARIOS)
+        if value is not None and SPEED_TRANSFER not in scenarios:
+            raise ValueError(
+                f"sets the {SPEED_TRANSFER} scenario, which scenarios {list(scenarios)} does "
+                f"not name; add it (--scenarios {SPEED_TRANSFER})"
+            )
+        return value
+
     def n_jobs(self) -> int:
         """Processes to use."""
         return os.cpu_count() or 1 if self.jobs == -1 else self.jobs
@@ -259,7 +279,7 @@ def write_config(config: BenchmarkConfig, path: str | os.PathLike[str]) -> None:
     """
     data = {
         k: v
-        for k, v in config.model_dump(mode="json").items()
+        for k, v in config.model_dump(mode="json", exclude_none=True).items()
         if v is not None and k != "cache_dir"
     }
     atomic_write_text(
