@@ -1,0 +1,94 @@
+"""``sdt compare``'s speed part: how much each sensor loses under a speed shift (text and JSON).
+
+Shown when the folder holds speed-transfer arms (``--scenarios speed-transfer``);
+the figures come from :mod:`~sdt_framework.verdict.speed_loss`.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import numpy as np
+from rich.table import Table
+
+from .common import print_table
+
+__all__ = ["print_speed_loss", "speed_loss_json", "speed_tables"]
+
+
+def speed_tables(folder: Any, baseline: str) -> tuple[Any, Any] | None:
+    """(loss per sensor, loss per class) of ``folder``; None when it has no speed-transfer arms."""
+    from ..verdict.speed_loss import speed_arms, speed_loss, speed_loss_by_class
+
+    results = folder.results
+    if results is None or not speed_arms(results["scenario"]):
+        return None
+    per_class = folder.per_class
+    by_class = None if per_class is None else speed_loss_by_class(per_class)
+    return speed_loss(results, baseline), by_class
+
+
+def _ci(low: float, high: float) -> str:
+    return "" if np.isnan(low) else f"\n[{low:+.3f}, {high:+.3f}]"
+
+
+def print_speed_loss(tables: tuple[Any, Any], baseline: str) -> None:
+    """One table per machine: each shift arm's sensors x classifiers, F1 within speed and
+    shifted, the loss and the excess over ``baseline``; then the loss per class."""
+    loss, by_class = tables
+    for machine, part in loss.groupby("machine", sort=False):
+        out = Table(
+            title=f"{machine}: loss of Macro F1 under a speed shift (speeds: trained -> tested; "
+            f"loss: within speed - shifted, same test runs, 95 % CI over repetitions; "
+            f"excess: loss - {baseline}'s loss)",
+            title_justify="left",
+        )
+        for column in ("speeds", "sensor", "classifier", "within", "shifted"):
+            out.add_column(column, no_wrap=True)
+        out.add_column("loss")
+        out.add_column("excess")
+        previous = None
+        for row in part.itertuples():
+            if previous is not None and row.shift.removeprefix("speed ") != previous:
+                out.add_section()
+            arm = row.shift.removeprefix("speed ")
+            excess = "–" if np.isnan(row.excess) else f"{row.excess:+.3f}"
+            out.add_row(
+                arm if arm != previous else "",
+                str(row.sensor),
+                str(row.classifier),
+                f"{row.within_f1:.3f}",
+                f"{row.shift_f1:.3f}",
+                f"{row.loss:+.3f}{_ci(row.loss_low, row.loss_high)}",
+                excess + _ci(row.excess_low, row.excess_high),
+            )
+            previous = arm
+        print_table(out)
+    if by_class is None or by_class.empty:
+        return
+    for (machine, shift), part in by_class.groupby(["machine", "shift"], sort=False):
+        wide = part.pivot(index="sensor", columns="class", values="loss")
+        out = Table(
+            title=f"{machine}, {shift}: loss of F1 per class (within speed - shifted, mean "
+            f"over classifiers and repetitions)",
+            title_justify="left",
+        )
+        out.add_column("sensor", no_wrap=True)
+        for name in wide.columns:
+            out.add_column(str(name))
+        sensors = list(dict.fromkeys(part["sensor"]))
+        for sensor in sensors:
+            out.add_row(str(sensor), *(f"{v:+.3f}" for v in wide.loc[sensor]))
+        print_table(out)
+
+
+def speed_loss_json(tables: tuple[Any, Any] | None) -> Any:
+    """The ``speed_loss`` key of ``sdt compare --json``: None without speed-transfer arms."""
+    if tables is None:
+        return None
+    loss, by_class = tables
+    return {
+        "per_sensor": json.loads(loss.to_json(orient="records")),
+        "per_class": None if by_class is None else json.loads(by_class.to_json(orient="records")),
+    }
