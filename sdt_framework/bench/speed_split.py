@@ -212,8 +212,8 @@ def speed_allocation(
     if not folds:
         raise SDTError(
             f"speed transfer needs runs at two speeds or more on one machine; the data has "
-            f"{_held(runs)}: read more speeds (an NLN-EMP archive: speeds = [50, 75, 100] in "
-            f"[benchmark])"
+            f"{_held(runs)}: read more speeds (speeds = [50, 75, 100] in [benchmark], for "
+            f"the synthetic pump or an NLN-EMP archive)"
         )
     split = "forward" if setting is None else setting.split
     rows: list[tuple] = []
