@@ -121,7 +121,10 @@ def benchmark(
         None, "--feature-dtype", help="Round features to float16 or float32 before classifying."
     ),
     scenarios: str | None = typer.Option(
-        None, "--scenarios", help="Comma-separated: forward,backward,interpolation."
+        None, "--scenarios", help="Comma-separated: forward,backward,interpolation,speed-transfer."
+    ),
+    speeds: str | None = typer.Option(
+        None, "--speeds", help="Operating speeds to use, e.g. 50,75,100 (docs/report.md)."
     ),
     machines: str | None = typer.Option(None, "--machines", help="Comma-separated machines."),
     channels: str | None = typer.Option(None, "--channels", help="Comma-separated channels."),
@@ -171,10 +174,13 @@ def benchmark(
       sdt benchmark --quick --units 5
 
       sdt benchmark --quick --transfer "wilcoxon-786b10 -> adxl345,adxl357"
+
+      sdt benchmark --quick --speeds 50,75,100 --scenarios speed-transfer --classifiers lr
     """
     # Imported here so that `sdt --help` and the listing commands start fast.
     from ..bench.config import load_config
     from ..bench.interrupt import watch_interrupts
+    from .dataset_inspect import parse_speeds
 
     given: dict[str, Any] = {
         "data": data,
@@ -184,6 +190,7 @@ def benchmark(
         "features": features,
         "feature_dtype": feature_dtype,
         "scenarios": _names(scenarios),
+        "speeds": parse_speeds(speeds),
         "machines": _names(machines),
         "channels": _names(channels),
         "allocation": allocation,
