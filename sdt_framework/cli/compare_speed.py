@@ -33,37 +33,43 @@ def _ci(low: float, high: float) -> str:
     return "" if np.isnan(low) else f"\n[{low:+.3f}, {high:+.3f}]"
 
 
+def _cell(row: Any) -> str:
+    """F1 within -> shifted, the loss with its interval, the excess over the baseline's."""
+    text = f"{row.within_f1:.3f} -> {row.shift_f1:.3f}\nloss {row.loss:+.3f}"
+    text += _ci(row.loss_low, row.loss_high)
+    if not np.isnan(row.excess):
+        text += f"\nexcess {row.excess:+.3f}{_ci(row.excess_low, row.excess_high)}"
+    return text
+
+
 def print_speed_loss(tables: tuple[Any, Any], baseline: str) -> None:
-    """One table per machine: each shift arm's sensors x classifiers, F1 within speed and
-    shifted, the loss and the excess over ``baseline``; then the loss per class."""
+    """One table per machine: rows shift arm x classifier, a column per sensor (F1 within
+    speed -> shifted, the loss and the excess over ``baseline``'s); then the loss per class."""
     loss, by_class = tables
     for machine, part in loss.groupby("machine", sort=False):
+        sensors = list(dict.fromkeys([baseline, *part["sensor"]]))
+        sensors = [s for s in sensors if s in set(part["sensor"])]
         out = Table(
-            title=f"{machine}: loss of Macro F1 under a speed shift (speeds: trained -> tested; "
-            f"loss: within speed - shifted, same test runs, 95 % CI over repetitions; "
-            f"excess: loss - {baseline}'s loss)",
+            title=f"{machine}: Macro F1 under a speed shift (trained -> tested speeds), within "
+            f"speed -> shifted on the same test runs; loss = within - shifted, 95 % CI over "
+            f"repetitions; excess = loss - {baseline}'s loss",
             title_justify="left",
         )
-        for column in ("speeds", "sensor", "classifier", "within", "shifted"):
-            out.add_column(column, no_wrap=True)
-        out.add_column("loss")
-        out.add_column("excess")
+        out.add_column("speeds", no_wrap=True)
+        out.add_column("classifier", no_wrap=True)
+        for sensor in sensors:
+            out.add_column(str(sensor))
         previous = None
-        for row in part.itertuples():
-            if previous is not None and row.shift.removeprefix("speed ") != previous:
+        for (shift, classifier), rows in part.groupby(["shift", "classifier"], sort=False):
+            if previous is not None and shift != previous:
                 out.add_section()
-            arm = row.shift.removeprefix("speed ")
-            excess = "–" if np.isnan(row.excess) else f"{row.excess:+.3f}"
+            by_sensor = {r.sensor: r for r in rows.itertuples()}
             out.add_row(
-                arm if arm != previous else "",
-                str(row.sensor),
-                str(row.classifier),
-                f"{row.within_f1:.3f}",
-                f"{row.shift_f1:.3f}",
-                f"{row.loss:+.3f}{_ci(row.loss_low, row.loss_high)}",
-                excess + _ci(row.excess_low, row.excess_high),
+                shift.removeprefix("speed ") if shift != previous else "",
+                str(classifier),
+                *(_cell(by_sensor[s]) if s in by_sensor else "–" for s in sensors),
             )
-            previous = arm
+            previous = shift
         print_table(out)
     if by_class is None or by_class.empty:
         return
