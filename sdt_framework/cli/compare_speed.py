@@ -83,7 +83,7 @@ def print_speed_loss(tables: tuple[Any, Any], baseline: str) -> None:
         out.add_column("sensor", no_wrap=True)
         for name in wide.columns:
             out.add_column(str(name))
-        sensors = list(dict.fromkeys(part["sensor"]))
+        sensors = [s for s in dict.fromkeys([baseline, *part["sensor"]]) if s in wide.index]
         for sensor in sensors:
             out.add_row(str(sensor), *(f"{v:+.3f}" for v in wide.loc[sensor]))
         print_table(out)

@@ -53,13 +53,15 @@ def _loss_table(loss: pd.DataFrame) -> Table:
     return Table(header, tuple(rows), "Macro F1, mean over repetitions.")
 
 
-def _class_table(by_class: pd.DataFrame) -> Table:
+def _class_table(by_class: pd.DataFrame, first: str) -> Table:
     classes = list(dict.fromkeys(by_class["class"]))
     rows: list[tuple[str, ...]] = []
     for shift, part in by_class.groupby("shift", sort=False):
         rows.append((f"**{literal(shift)}**",) + ("",) * len(classes))
         wide = part.pivot(index="sensor", columns="class", values="loss")
-        for sensor in dict.fromkeys(part["sensor"]):
+        for sensor in dict.fromkeys([first, *part["sensor"]]):
+            if sensor not in wide.index:
+                continue
             cells = [wide.loc[sensor].get(c, np.nan) for c in classes]
             rows.append((literal(sensor), *("–" if np.isnan(v) else f"{v:+.3f}" for v in cells)))
     header = ("sensor", *(literal(c) for c in classes))
@@ -80,5 +82,8 @@ def speed_blocks(folder: ResultsFolder) -> list[Block]:
     if folder.per_class is not None:
         by_class = speed_loss_by_class(folder.per_class)
         for machine, part in by_class.groupby("machine", sort=False):
-            blocks += [Heading(f"{literal(machine)}: per class", 3), _class_table(part)]
+            blocks += [
+                Heading(f"{literal(machine)}: per class", 3),
+                _class_table(part, folder.reference),
+            ]
     return blocks

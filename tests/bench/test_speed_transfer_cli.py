@@ -127,3 +127,28 @@ def test_one_speed_under_speed_transfer_is_one_line_and_exit_2(tmp_path, sdt_mai
         "Motor-2 at 100: read more speeds (speeds = [50, 75, 100] in [benchmark], for the "
         "synthetic pump or an NLN-EMP archive)"
     )
+
+
+def test_the_report_shows_the_loss_per_sensor_and_per_class(folder):
+    from sdt_framework.report.document import Heading, Table
+    from sdt_framework.report.load import load_results
+    from sdt_framework.report.speed import speed_blocks
+
+    blocks = speed_blocks(load_results(folder))
+    headings = [b.text for b in blocks if isinstance(b, Heading)]
+    assert headings == [
+        "Speed transfer: the loss under a speed shift",
+        "Motor-2: per sensor",
+        "Motor-2: per class",
+    ]
+    per_sensor, per_class = [b for b in blocks if isinstance(b, Table)]
+    results = pd.read_csv(folder / "results.csv").set_index(["scenario", "sensor", "repeat"])
+    row = next(r for r in per_sensor.rows if r[0] == "adxl357")  # the first fold: 50
+    assert per_sensor.rows[0][0] == "**speed 75+100 -> 50**"
+    by_hand = (
+        results.loc[("speed 50 -> 50", "adxl357"), "macro_f1"]
+        - results.loc[("speed 75+100 -> 50", "adxl357"), "macro_f1"]
+    ).mean()
+    assert row[4].startswith(f"{by_hand:+.3f}")
+    classes = set(pd.read_parquet(folder / "per_class.parquet")["class"])
+    assert set(per_class.header[1:]) == classes
