@@ -128,3 +128,25 @@ def test_a_machine_at_one_speed_is_skipped_with_its_reason_beside_one_with_three
 def test_speed_transfer_settings_without_the_scenario_are_refused():
     with pytest.raises(ValidationError, match="add it \\(--scenarios speed-transfer\\)"):
         BenchmarkConfig(scenarios=["forward"], speed_transfer={"train": [100], "test": [75]})
+
+
+def test_a_users_table_row_at_another_speed_than_its_arm_is_refused_naming_the_row(tmp_path):
+    table = tmp_path / "alloc.csv"
+    table.write_text(
+        "machine,scenario,run,side\n"
+        "m,speed 100 -> 75,75/h3,test\n"
+        "m,speed 100 -> 75,50/h1,train\n"  # trained at 50 in an arm that trains at 100
+    )
+    with pytest.raises(SDTError) as error:
+        plan_allocation(_config(allocation=str(table)), _recordings())
+    assert str(error.value) == (
+        f"{table}: row 3: run '50/h1' runs at 50; in 'speed 100 -> 75' a train run is at 100"
+    )
+
+
+def test_a_run_whose_channels_name_two_speeds_is_refused():
+    recordings = _recordings()
+    odd = recordings[0]
+    recordings.append(odd.__class__(**{**odd.__dict__, "channel": "ch2", "speed": "51"}))
+    with pytest.raises(SDTError, match="run '50/h1' of m has recordings at several speeds"):
+        plan_allocation(_config(), recordings)
