@@ -152,3 +152,17 @@ def test_the_report_shows_the_loss_per_sensor_and_per_class(folder):
     assert row[4].startswith(f"{by_hand:+.3f}")
     classes = set(pd.read_parquet(folder / "per_class.parquet")["class"])
     assert set(per_class.header[1:]) == classes
+
+
+def test_fig6_draws_a_chart_per_speed_arm(folder):
+    """Before, a folder of speed arms alone left Fig. 6 undrawn ('Number of columns must be a
+    positive integer, not 0'): the figure knew the paper's three scenarios only."""
+    from sdt_framework.report.figures_scores import plot_radar
+
+    per_class = pd.read_parquet(folder / "per_class.parquet")
+    sensors = ["wilcoxon-786b10", "adxl345", "adxl357"]
+    fig = plot_radar(per_class, sensors, {})
+    titles = [ax.get_title() for ax in fig.axes]
+    assert len(titles) == 6
+    assert "Motor-2 — Speed transfer: trained at 75+100, tested at 50" in titles
+    assert "Motor-2 — Within speed: trained and tested at 50" in titles
