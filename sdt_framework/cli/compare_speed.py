@@ -20,23 +20,26 @@ __all__ = ["print_speed_loss", "speed_loss_json", "speed_tables"]
 def speed_tables(folder: Any, baseline: str) -> tuple[Any, Any] | None:
     """(loss per sensor, loss per class) of ``folder``; None when it has no speed-transfer arms."""
     from ..verdict.speed_loss import speed_arms, speed_loss, speed_loss_by_class
+    from ..verdict.speed_recordings import recording_intervals
 
     results = folder.results
     if results is None or not speed_arms(results["scenario"]):
         return None
     per_class = folder.per_class
     by_class = None if per_class is None else speed_loss_by_class(per_class)
-    return speed_loss(results, baseline), by_class
+    loss = recording_intervals(speed_loss(results, baseline), folder.per_recording)
+    return loss, by_class
 
 
 def _ci(low: float, high: float) -> str:
-    return "" if np.isnan(low) else f"\n[{low:+.3f}, {high:+.3f}]"
+    return "" if np.isnan(low) else f" [{low:+.3f}, {high:+.3f}]"
 
 
 def _cell(row: Any) -> str:
     """F1 within -> shifted, the loss with its interval, the excess over the baseline's."""
     text = f"{row.within_f1:.3f} -> {row.shift_f1:.3f}\nloss {row.loss:+.3f}"
-    text += _ci(row.loss_low, row.loss_high)
+    text += f"\nreps{_ci(row.loss_low, row.loss_high) or ' –'}"
+    text += f"\nrecs{_ci(row.rec_low, row.rec_high) or ' –'}"
     if not np.isnan(row.excess):
         text += f"\nexcess {row.excess:+.3f}{_ci(row.excess_low, row.excess_high)}"
     return text
@@ -51,8 +54,9 @@ def print_speed_loss(tables: tuple[Any, Any], baseline: str) -> None:
         sensors = [s for s in sensors if s in set(part["sensor"])]
         out = Table(
             title=f"{machine}: Macro F1 under a speed shift (trained -> tested speeds), within "
-            f"speed -> shifted on the same test runs; loss = within - shifted, 95 % CI over "
-            f"repetitions; excess = loss - {baseline}'s loss",
+            f"speed -> shifted on the same test runs; loss = within - shifted, 95 % CIs over "
+            f"repetitions and over test recordings; excess = loss - {baseline}'s loss, 95 % CI "
+            f"over repetitions",
             title_justify="left",
         )
         out.add_column("speeds", no_wrap=True)

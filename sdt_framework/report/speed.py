@@ -13,6 +13,7 @@ import numpy as np
 import pandas as pd
 
 from ..verdict.speed_loss import speed_arms, speed_loss, speed_loss_by_class
+from ..verdict.speed_recordings import recording_intervals
 from .document import Block, Heading, Paragraph, Table, literal
 from .load import ResultsFolder
 
@@ -24,7 +25,9 @@ INTRO = (
     "within minus shifted, run by run (same sensor, classifier, unit and repetition); "
     "positive: the classifier does worse at a speed it was not trained at. The excess is a "
     "sensor's loss minus the reference's: a candidate that loses more than the reference "
-    "under the same shift has a positive excess. Intervals: 95 % Student-t over repetitions."
+    "under the same shift has a positive excess. Intervals: 95 % Student-t over repetitions, "
+    "and for the loss also over test recordings (resampled within each class, one draw for "
+    "both arms; '–' where a class has one test recording)."
 )
 
 
@@ -37,7 +40,7 @@ def _ci(mean: float, low: float, high: float) -> str:
 def _loss_table(loss: pd.DataFrame) -> Table:
     rows: list[tuple[str, ...]] = []
     for shift, part in loss.groupby("shift", sort=False):
-        rows.append((f"**{literal(shift)}**",) + ("",) * 5)
+        rows.append((f"**{literal(shift)}**",) + ("",) * 6)
         for r in part.itertuples():
             rows.append(
                 (
@@ -46,10 +49,12 @@ def _loss_table(loss: pd.DataFrame) -> Table:
                     f"{r.within_f1:.3f}",
                     f"{r.shift_f1:.3f}",
                     _ci(r.loss, r.loss_low, r.loss_high),
+                    _ci(r.loss, r.rec_low, r.rec_high).partition(" ")[2] or "–",
                     _ci(r.excess, r.excess_low, r.excess_high),
                 )
             )
-    header = ("sensor", "classifier", "within speed", "shifted", "loss", "excess")
+    header = ("sensor", "classifier", "within speed", "shifted", "loss [reps CI]",
+              "recordings CI", "excess [reps CI]")  # fmt: skip
     return Table(header, tuple(rows), "Macro F1, mean over repetitions.")
 
 
@@ -74,7 +79,7 @@ def speed_blocks(folder: ResultsFolder) -> list[Block]:
     results = folder.results
     if results is None or not speed_arms(results["scenario"]):
         return []
-    loss = speed_loss(results, folder.reference)
+    loss = recording_intervals(speed_loss(results, folder.reference), folder.per_recording)
     blocks: list[Block] = [Heading("Speed transfer: the loss under a speed shift", 2)]
     blocks.append(Paragraph(INTRO))
     for machine, part in loss.groupby("machine", sort=False):

@@ -84,6 +84,8 @@ def test_compare_gives_the_loss_under_the_speed_shift(folder, sdt_main):
     results = pd.read_csv(folder / "results.csv")
     assert set(loss["sensor"]) == {"wilcoxon-786b10", "adxl345", "adxl357"}
     assert len(loss) == 3 * 3  # three folds x three sensors
+    # one channel, one test run per class: no test set to resample, and the reason given
+    assert set(loss["rec_note"]) == {"1 test recording in some class: nothing to resample"}
     for row in loss.itertuples():
         f1 = results[(results["sensor"] == row.sensor)].set_index(["scenario", "repeat"])
         by_hand = (f1.loc[row.within, "macro_f1"] - f1.loc[row.shift, "macro_f1"]).mean()

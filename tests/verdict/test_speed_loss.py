@@ -82,3 +82,60 @@ def test_the_loss_per_class_is_the_mean_over_paired_runs():
     assert table.loc[("ref", "fault"), "loss"] == pytest.approx(0.15)  # 0.1 and 0.2
     assert table.loc[("ref", "healthy"), "loss"] == pytest.approx(0.0)
     assert int(table.loc[("cheap", "fault"), "n"]) == 2
+
+
+def test_the_recording_interval_spans_the_test_sets_a_resample_can_draw():
+    """Two classes of two test recordings (10 windows each). Within speed every window is
+    right; shifted, recording a1 is all called b. A stratified resample draws class a as
+    (a1, a1), (a1, a2) or (a2, a2), each at least 1/4 likely, so the 2.5 and 97.5
+    percentiles of 2000 draws are the smallest and largest loss of those three test sets,
+    each worked out here with sklearn's f1_score on the windows' labels."""
+    from sklearn.metrics import f1_score
+
+    from sdt_framework.verdict.speed_recordings import recording_intervals
+
+    truth = {"a1": "a", "a2": "a", "b1": "b", "b2": "b"}
+    rows = []
+    for scenario in ("speed 75 -> 75", "speed 100 -> 75"):
+        for rec, true in truth.items():
+            wrong = scenario == "speed 100 -> 75" and rec == "a1"
+            rows.append({"machine": "M", "scenario": scenario, "sensor": "s",
+                         "feature_set": "paper8", "classifier": "lr", "repeat": 0,
+                         "recording_id": rec, "true": true, "predicted": "b" if wrong else true,
+                         "count": 10})  # fmt: skip
+    per_recording = pd.DataFrame(rows)
+
+    def loss(drawn: list[str]) -> float:
+        drawn = [*drawn, "b1", "b2"]
+        y = [truth[r] for r in drawn for _ in range(10)]
+        shifted = ["b" if r == "a1" else truth[r] for r in drawn for _ in range(10)]
+        return 1.0 - f1_score(y, shifted, average="macro")
+
+    outcomes = [loss(["a1", "a1"]), loss(["a1", "a2"]), loss(["a2", "a2"])]
+    assert outcomes == pytest.approx([2 / 3, 1 - (2 / 3 + 0.8) / 2, 0.0])
+    results = per_recording.drop_duplicates(["scenario"])[
+        ["machine", "scenario", "sensor", "feature_set", "classifier", "repeat"]
+    ].assign(macro_f1=[1.0, 1 - outcomes[1]], status="ok", unit=-1)
+    table = recording_intervals(speed_loss(results), per_recording)
+    row = table.iloc[0]
+    assert row["loss"] == pytest.approx(outcomes[1])
+    assert (row["rec_low"], row["rec_high"]) == pytest.approx((min(outcomes), max(outcomes)))
+    assert row["rec_note"] == ""
+
+
+def test_one_test_recording_in_a_class_gives_no_recording_interval_and_says_why():
+    from sdt_framework.verdict.speed_recordings import recording_intervals
+
+    rows = [
+        {"machine": "M", "scenario": s, "sensor": "s", "feature_set": "paper8",
+         "classifier": "lr", "repeat": 0, "recording_id": r, "true": r[0], "predicted": r[0],
+         "count": 5}
+        for s in ("speed 75 -> 75", "speed 100 -> 75") for r in ("a1", "b1", "b2")
+    ]  # fmt: skip
+    results = _results()
+    table = recording_intervals(speed_loss(results[results["sensor"] == "ref"]), pd.DataFrame(rows))
+    assert math.isnan(table.iloc[0]["rec_low"])
+    assert table.iloc[0]["rec_note"] == "no per-recording counts stored for this cell"
+    rows = [{**r, "sensor": "ref"} for r in rows]
+    table = recording_intervals(speed_loss(results[results["sensor"] == "ref"]), pd.DataFrame(rows))
+    assert table.iloc[0]["rec_note"] == "1 test recording in some class: nothing to resample"
