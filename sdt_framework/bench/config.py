@@ -158,6 +158,11 @@ class BenchmarkConfig(BaseModel):
     @field_validator("speeds", mode="before")
     @classmethod
     def _speeds(cls, value: Any) -> Any:
+        if isinstance(value, str):  # "all" is the dataset's option, not a selection
+            raise ValueError(
+                "give the speeds to use, e.g. [50, 75, 100] (--speeds 50,75,100); every speed "
+                "a dataset holds: dataset_options speeds = 'all'"
+            )
         for item in value if isinstance(value, list) else ():
             if isinstance(item, bool) or (isinstance(item, str) and not item.strip()):
                 shown = str(item).lower() if isinstance(item, bool) else repr(item)

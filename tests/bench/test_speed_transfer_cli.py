@@ -168,3 +168,13 @@ def test_fig6_draws_a_chart_per_speed_arm(folder):
     assert len(titles) == 6
     assert "Motor-2 — Speed transfer: trained at 75+100, tested at 50" in titles
     assert "Motor-2 — Within speed: trained and tested at 50" in titles
+
+
+def test_speeds_all_on_the_command_line_points_to_the_dataset_option(tmp_path, sdt_main):
+    code, _, err = sdt_main("benchmark", "--speeds", "all", "--out", str(tmp_path / "out"))
+    assert code == 2
+    assert err.strip() == (
+        "error: command line: field 'speeds': give the speeds to use, e.g. [50, 75, 100] "
+        "(--speeds 50,75,100); every speed a dataset holds: dataset_options speeds = 'all' "
+        "(got 'all')"
+    )
