@@ -5,8 +5,8 @@ scenario is asked for) are allocated by the paper's rules
 (:func:`.scenarios.rule_allocation`) and the speed-transfer scenario
 (:func:`.speed_split.speed_allocation`), or read from ``allocation`` when the
 config names a table. Every (machine, scenario) that cannot be scored is
-returned with its reason; a speed-transfer fold is scored as a pair: the
-within-speed arm of a fold whose shift arm cannot be scored is left out too.
+returned with its reason; a speed-transfer fold is scored as a whole: the
+other arms of a fold one of whose arms cannot be scored are left out too.
 """
 
 from __future__ import annotations
@@ -24,7 +24,6 @@ from .scenarios import (
     load_allocation,
     parse_speed_scenario,
     rule_allocation,
-    speed_scenario,
 )
 from .speed_split import SPEED_TRANSFER, speed_allocation, speed_key
 
@@ -67,6 +66,20 @@ def _wanted(scenario: object, scenarios: Sequence[str]) -> bool:
     return scenario in scenarios
 
 
+def _twins(allocation: pd.DataFrame, machine: str, scenario: str) -> list[str]:
+    """The other arms of a speed-transfer fold (same machine, same test speed): a shift arm's
+    within-speed arm, a within-speed arm's shift arms; none for another scenario."""
+    parsed = parse_speed_scenario(scenario)
+    if parsed is None:
+        return []
+    names = allocation.loc[allocation["machine"] == machine, "scenario"].unique()
+    return [
+        name
+        for name in names
+        if name != scenario and (p := parse_speed_scenario(name)) is not None and p[1] == parsed[1]
+    ]
+
+
 def plan_allocation(
     config: BenchmarkConfig, recordings: Sequence[Recording]
 ) -> tuple[pd.DataFrame, dict[tuple[str, str], str]]:
@@ -89,11 +102,6 @@ def plan_allocation(
     )
     skipped = {**left, **check_allocation(allocation)}
     for (machine, scenario), reason in sorted(skipped.items()):
-        parsed = parse_speed_scenario(scenario)
-        if parsed is not None and parsed[0] != (parsed[1],):
-            within = speed_scenario([parsed[1]], parsed[1])
-            if ((allocation["machine"] == machine) & (allocation["scenario"] == within)).any():
-                skipped.setdefault(
-                    (machine, within), f"its speed-transfer arm {scenario!r} is skipped: {reason}"
-                )
+        for twin in _twins(allocation, machine, scenario):
+            skipped.setdefault((machine, twin), f"its twin arm {scenario!r} is skipped: {reason}")
     return allocation, skipped

@@ -150,3 +150,22 @@ def test_a_run_whose_channels_name_two_speeds_is_refused():
     recordings.append(odd.__class__(**{**odd.__dict__, "channel": "ch2", "speed": "51"}))
     with pytest.raises(SDTError, match="run '50/h1' of m has recordings at several speeds"):
         plan_allocation(_config(), recordings)
+
+
+def test_a_fold_is_scored_whole_an_unscorable_within_arm_takes_its_shift_arm_along(tmp_path):
+    """The within arm lacks a training run of the fault; the shift arm alone would be scored
+    with nothing to take its loss against, so it is skipped too, saying why."""
+    table = tmp_path / "alloc.csv"
+    table.write_text(
+        "machine,scenario,run,side\n"
+        "m,speed 100 -> 75,100/h1,train\nm,speed 100 -> 75,100/f1,train\n"
+        "m,speed 100 -> 75,75/h3,test\nm,speed 100 -> 75,75/f3,test\n"
+        "m,speed 75 -> 75,75/h1,train\n"
+        "m,speed 75 -> 75,75/h3,test\nm,speed 75 -> 75,75/f3,test\n"
+    )
+    _, skipped = plan_allocation(_config(allocation=str(table)), _recordings())
+    assert skipped == {
+        ("m", "speed 75 -> 75"): "no training run for fault",
+        ("m", "speed 100 -> 75"): "its twin arm 'speed 75 -> 75' is skipped: no training run "
+        "for fault",
+    }
