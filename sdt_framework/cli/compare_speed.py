@@ -12,23 +12,27 @@ from typing import Any
 import numpy as np
 from rich.table import Table
 
-from .common import print_table
+from .common import console, print_table
 
 __all__ = ["print_speed_loss", "speed_loss_json", "speed_tables"]
 
 
-def speed_tables(folder: Any, baseline: str) -> tuple[Any, Any] | None:
-    """(loss per sensor, loss per class) of ``folder``; None when it has no speed-transfer arms."""
-    from ..verdict.speed_loss import speed_arms, speed_loss, speed_loss_by_class
+def speed_tables(folder: Any, baseline: str) -> tuple[Any, Any, list[str]] | None:
+    """(loss per sensor, loss per class, shift arms with no within-speed arm) of ``folder``;
+    None when it has no speed-transfer arms."""
+    from ..verdict.speed_loss import speed_arms, speed_loss, speed_loss_by_class, unpaired_arms
     from ..verdict.speed_recordings import recording_intervals
 
     results = folder.results
-    if results is None or not speed_arms(results["scenario"]):
+    if results is None:
+        return None
+    unpaired = unpaired_arms(results["scenario"])
+    if not speed_arms(results["scenario"]) and not unpaired:
         return None
     per_class = folder.per_class
     by_class = None if per_class is None else speed_loss_by_class(per_class)
     loss = recording_intervals(speed_loss(results, baseline), folder.per_recording)
-    return loss, by_class
+    return loss, by_class, unpaired
 
 
 def _ci(low: float, high: float) -> str:
@@ -45,10 +49,14 @@ def _cell(row: Any) -> str:
     return text
 
 
-def print_speed_loss(tables: tuple[Any, Any], baseline: str) -> None:
+def print_speed_loss(tables: tuple[Any, Any, list[str]], baseline: str) -> None:
     """One table per machine: rows shift arm x classifier, a column per sensor (F1 within
     speed -> shifted, the loss and the excess over ``baseline``'s); then the loss per class."""
-    loss, by_class = tables
+    from ..verdict.speed_loss import UNPAIRED
+
+    loss, by_class, unpaired = tables
+    if unpaired:
+        console.print(f"speed transfer: {', '.join(unpaired)}: {UNPAIRED}", highlight=False)
     for machine, part in loss.groupby("machine", sort=False):
         sensors = list(dict.fromkeys([baseline, *part["sensor"]]))
         sensors = [s for s in sensors if s in set(part["sensor"])]
@@ -93,12 +101,13 @@ def print_speed_loss(tables: tuple[Any, Any], baseline: str) -> None:
         print_table(out)
 
 
-def speed_loss_json(tables: tuple[Any, Any] | None) -> Any:
+def speed_loss_json(tables: tuple[Any, Any, list[str]] | None) -> Any:
     """The ``speed_loss`` key of ``sdt compare --json``: None without speed-transfer arms."""
     if tables is None:
         return None
-    loss, by_class = tables
+    loss, by_class, unpaired = tables
     return {
+        "unpaired": unpaired,
         "per_sensor": json.loads(loss.to_json(orient="records")),
         "per_class": None if by_class is None else json.loads(by_class.to_json(orient="records")),
     }

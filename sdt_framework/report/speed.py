@@ -12,7 +12,13 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..verdict.speed_loss import speed_arms, speed_loss, speed_loss_by_class
+from ..verdict.speed_loss import (
+    UNPAIRED,
+    speed_arms,
+    speed_loss,
+    speed_loss_by_class,
+    unpaired_arms,
+)
 from ..verdict.speed_recordings import recording_intervals
 from .document import Block, Heading, Paragraph, Table, literal
 from .load import ResultsFolder
@@ -75,13 +81,16 @@ def _class_table(by_class: pd.DataFrame, first: str) -> Table:
 
 
 def speed_blocks(folder: ResultsFolder) -> list[Block]:
-    """The section; empty when the folder has no speed-transfer arm with its within-speed twin."""
+    """The section; empty when the folder has no speed-transfer arm."""
     results = folder.results
-    if results is None or not speed_arms(results["scenario"]):
+    unpaired = [] if results is None else unpaired_arms(results["scenario"])
+    if results is None or (not speed_arms(results["scenario"]) and not unpaired):
         return []
     loss = recording_intervals(speed_loss(results, folder.reference), folder.per_recording)
     blocks: list[Block] = [Heading("Speed transfer: the loss under a speed shift", 2)]
     blocks.append(Paragraph(INTRO))
+    if unpaired:
+        blocks.append(Paragraph(f"{literal(', '.join(unpaired))}: {UNPAIRED}."))
     for machine, part in loss.groupby("machine", sort=False):
         blocks += [Heading(f"{literal(machine)}: per sensor", 3), _loss_table(part)]
     if folder.per_class is not None:

@@ -22,7 +22,13 @@ from scipy import stats
 from ..bench.results import scenario_rank
 from ..bench.scenarios import parse_speed_scenario, speed_scenario
 
-__all__ = ["speed_arms", "speed_loss", "speed_loss_by_class"]
+__all__ = ["UNPAIRED", "speed_arms", "speed_loss", "speed_loss_by_class", "unpaired_arms"]
+
+#: what is said of shift arms without a within-speed arm (``split = "all"``, or the arm skipped)
+UNPAIRED = (
+    "no within-speed arm to take the loss against (split = 'all' has none; or it was skipped: "
+    "skipped.csv); Table 4 shows their Macro F1"
+)
 
 #: the columns that pair a shift run with its within-speed run (those the results carry)
 PAIR_KEYS = [
@@ -53,6 +59,14 @@ def speed_arms(scenarios: pd.Series | list[str]) -> list[tuple[str, str]]:
         if within in present:
             arms.append((name, within))
     return arms
+
+
+def unpaired_arms(scenarios: pd.Series | list[str]) -> list[str]:
+    """Shift arms present whose within-speed arm is not: their loss cannot be computed."""
+    present = set(pd.Series(scenarios).dropna())
+    paired = {shift for shift, _within in speed_arms(scenarios)}
+    shifts = [s for s in present if (p := parse_speed_scenario(s)) and p[0] != (p[1],)]
+    return sorted(set(shifts) - paired, key=scenario_rank)
 
 
 def _paired(frame: pd.DataFrame, value: str, extra: list[str]) -> pd.DataFrame:

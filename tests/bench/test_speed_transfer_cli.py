@@ -178,3 +178,20 @@ def test_speeds_all_on_the_command_line_points_to_the_dataset_option(tmp_path, s
         "(--speeds 50,75,100); every speed a dataset holds: dataset_options speeds = 'all' "
         "(got 'all')"
     )
+
+
+def test_split_all_has_no_loss_and_compare_says_why(tmp_path, sdt_main):
+    extra = 'speed_transfer = {train = [50, 100], test = [75], split = "all"}'
+    out = tmp_path / "out"
+    code, _, err = sdt_main("benchmark", str(_config(tmp_path, extra)), "--out", str(out),
+                            "--cache-dir", str(tmp_path / "cache"))  # fmt: skip
+    assert code == 0, err
+    assert set(pd.read_csv(out / "allocation.csv")["scenario"]) == {"speed 50+100 -> 75"}
+    code, text, err = sdt_main("compare", str(out))
+    assert code == 0, err
+    assert (
+        "speed transfer: speed 50+100 -> 75: no within-speed arm to take the loss against "
+        "(split = 'all' has none; or it was skipped: skipped.csv); Table 4 shows their Macro F1"
+    ) in " ".join(text.split())
+    code, text, _ = sdt_main("compare", str(out), "--json")
+    assert json.loads(text)["speed_loss"]["unpaired"] == ["speed 50+100 -> 75"]
