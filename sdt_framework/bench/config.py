@@ -21,7 +21,7 @@ from ..io import atomic_write_text
 from ..machine_files import machines_from_tables
 from ..toml_files import read_toml, validate_file
 from .config_paths import relative_to, resolve_written, written_by_sdt
-from .speed_split import SPEED_TRANSFER, SpeedTransfer
+from .speed_split import SPEED_TRANSFER, SpeedTransfer, check_speeds
 
 __all__ = [
     "SCENARIOS",
@@ -163,13 +163,7 @@ class BenchmarkConfig(BaseModel):
                 "give the speeds to use, e.g. [50, 75, 100] (--speeds 50,75,100); every speed "
                 "a dataset holds: dataset_options speeds = 'all'"
             )
-        for item in value if isinstance(value, list) else ():
-            if isinstance(item, bool) or (isinstance(item, str) and not item.strip()):
-                shown = str(item).lower() if isinstance(item, bool) else repr(item)
-                raise ValueError(f"{shown} is not a speed; give a number (50) or a label ('50')")
-            if isinstance(item, int | float) and not item > 0:
-                raise ValueError(f"{item!r} is not a speed; give a positive number (% of rated)")
-        return value
+        return check_speeds(value, "50")
 
     @field_validator("zones")
     @classmethod

@@ -49,6 +49,7 @@ from .scenarios import (
 __all__ = [
     "SPEED_TRANSFER",
     "SpeedTransfer",
+    "check_speeds",
     "matches",
     "speed_allocation",
     "speed_key",
@@ -73,13 +74,7 @@ class SpeedTransfer(BaseModel):
     def _speeds(cls, value: object) -> object:
         if isinstance(value, list) and not value:
             raise ValueError("must name at least one speed, e.g. [100]")
-        for item in value if isinstance(value, list) else ():
-            if isinstance(item, bool) or (isinstance(item, str) and not item.strip()):
-                shown = str(item).lower() if isinstance(item, bool) else repr(item)
-                raise ValueError(f"{shown} is not a speed; give a number (75) or a label ('75')")
-            if isinstance(item, int | float) and not item > 0:
-                raise ValueError(f"{item!r} is not a speed; give a positive number (% of rated)")
-        return value
+        return check_speeds(value, "75")
 
     @model_validator(mode="after")
     def _pair(self) -> SpeedTransfer:
@@ -96,6 +91,20 @@ class SpeedTransfer(BaseModel):
                 f"tests at a speed it did not train at"
             )
         return self
+
+
+def check_speeds(value: object, example: str) -> object:
+    """``value`` if each item of a list of speeds is a speed (a positive number, or a label);
+    else ValueError naming the item (pydantic's "before" check of ``speeds`` lists)."""
+    for item in value if isinstance(value, list) else ():
+        if isinstance(item, bool) or (isinstance(item, str) and not item.strip()):
+            shown = str(item).lower() if isinstance(item, bool) else repr(item)
+            raise ValueError(
+                f"{shown} is not a speed; give a number ({example}) or a label ('{example}')"
+            )
+        if isinstance(item, int | float) and not item > 0:
+            raise ValueError(f"{item!r} is not a speed; give a positive number (% of rated)")
+    return value
 
 
 def _number(value: float | str) -> float | None:
