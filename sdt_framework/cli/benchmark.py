@@ -19,6 +19,7 @@ from rich.text import Text
 
 from .benchmark_table import print_table4
 from .common import console, err_console, registry, shorten_labels, warn
+from .dataset_inspect import parse_speeds
 
 EXIT_CLASSIFIER_FAILED = 1
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a process ended by Ctrl-C
@@ -180,7 +181,6 @@ def benchmark(
     # Imported here so that `sdt --help` and the listing commands start fast.
     from ..bench.config import load_config
     from ..bench.interrupt import watch_interrupts
-    from .dataset_inspect import parse_speeds
 
     given: dict[str, Any] = {
         "data": data,
