@@ -14,13 +14,14 @@ from pathlib import Path
 from typing import Any, Literal
 
 import tomli_w
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator
 
 from ..errors import SpecFileError, one_line
 from ..io import atomic_write_text
 from ..machine_files import machines_from_tables
 from ..toml_files import read_toml, validate_file
 from .config_paths import relative_to, resolve_written, written_by_sdt
+from .speed_split import SPEED_TRANSFER, SpeedTransfer, check_speeds
 
 __all__ = [
     "SCENARIOS",
@@ -106,8 +107,16 @@ class BenchmarkConfig(BaseModel):
     settle_s: float = Field(
         default=0.1, ge=0, le=3600, description="Settling discarded per acquisition, s."
     )
-    scenarios: list[Literal["forward", "backward", "interpolation"]] = Field(
-        default_factory=lambda: list(SCENARIOS), description="Generalisation scenarios."
+    scenarios: list[Literal["forward", "backward", "interpolation", "speed-transfer"]] = Field(
+        default_factory=lambda: list(SCENARIOS),
+        description="Generalisation scenarios; speed-transfer: train at other speeds than "
+        "the test runs' (leave one speed out, or the speed_transfer pair).",
+    )
+    speed_transfer: SpeedTransfer | None = Field(
+        default=None,
+        description="The speed-transfer scenario's pair, e.g. {train = [100], test = [75]} "
+        "(default: leave one speed out), and split: the rule splitting each speed's runs "
+        "(forward, backward, interpolation; all: every run, no within-speed arm).",
     )
     allocation: str | None = Field(
         default=None, description="CSV/TOML allocation table replacing the scenario rule."
@@ -149,13 +158,12 @@ class BenchmarkConfig(BaseModel):
     @field_validator("speeds", mode="before")
     @classmethod
     def _speeds(cls, value: Any) -> Any:
-        for item in value if isinstance(value, list) else ():
-            if isinstance(item, bool) or (isinstance(item, str) and not item.strip()):
-                shown = str(item).lower() if isinstance(item, bool) else repr(item)
-                raise ValueError(f"{shown} is not a speed; give a number (50) or a label ('50')")
-            if isinstance(item, int | float) and not item > 0:
-                raise ValueError(f"{item!r} is not a speed; give a positive number (% of rated)")
-        return value
+        if isinstance(value, str):  # "all" is the dataset's option, not a selection
+            raise ValueError(
+                "give the speeds to use, e.g. [50, 75, 100] (--speeds 50,75,100); every speed "
+                "a dataset holds: dataset_options speeds = 'all'"
+            )
+        return check_speeds(value, "50")
 
     @field_validator("zones")
     @classmethod
@@ -186,6 +194,17 @@ class BenchmarkConfig(BaseModel):
     def _jobs(cls, value: int) -> int:
         if value == 0 or value < -1:
             raise ValueError("must be a positive number of processes, or -1 for all cores")
+        return value
+
+    @field_validator("speed_transfer")
+    @classmethod
+    def _speed_pair(cls, value: SpeedTransfer | None, info: ValidationInfo) -> Any:
+        scenarios = info.data.get("scenarios", SCENARIOS)
+        if value is not None and SPEED_TRANSFER not in scenarios:
+            raise ValueError(
+                f"sets the {SPEED_TRANSFER} scenario, which scenarios {list(scenarios)} does "
+                f"not name; add it (--scenarios {SPEED_TRANSFER})"
+            )
         return value
 
     def n_jobs(self) -> int:
@@ -259,7 +278,7 @@ def write_config(config: BenchmarkConfig, path: str | os.PathLike[str]) -> None:
     """
     data = {
         k: v
-        for k, v in config.model_dump(mode="json").items()
+        for k, v in config.model_dump(mode="json", exclude_none=True).items()
         if v is not None and k != "cache_dir"
     }
     atomic_write_text(

@@ -31,13 +31,13 @@ from ..registry import Registry
 from ..specs import ClassifierSpec, FeatureContext, FeatureSetSpec, MachineSpec, SensorSpec
 from ..stages import StageSpec
 from ..stages.units import drawn_stages
+from .allocate import plan_allocation
 from .config import BenchmarkConfig
 from .feature_context import check_order_rates, feature_contexts
 from .lengths import check_lengths
 from .machines import benchmark_machines
 from .node_samples import Node, resolve_nodes
 from .nodes import find_nodes, node_sensors
-from .scenarios import Run, check_allocation, load_allocation, rule_allocation
 from .sensor_set import default_reference, default_sensor_names, screen_sensors
 from .transfer import Transfer, parse_transfers
 
@@ -137,16 +137,7 @@ def plan_benchmark(config: BenchmarkConfig, registry: Registry) -> Plan:
                     f"({skipped_sensors[name]}); drop the pair"
                 )
 
-    runs = sorted(
-        {Run(r.machine, r.run, r.condition, r.severity) for r in recordings},
-        key=lambda r: (r.machine, r.run),
-    )
-    if config.allocation:
-        allocation = load_allocation(config.allocation, runs)
-        allocation = allocation[allocation["scenario"].isin(config.scenarios)]
-    else:
-        allocation = rule_allocation(runs, config.scenarios)
-    skipped = check_allocation(allocation)
+    allocation, skipped = plan_allocation(config, recordings)
     used = allocation[
         [
             (m, s) not in skipped

@@ -22,11 +22,15 @@ import pandas as pd
 from ..csv_cells import escape_frame
 from ..io import atomic_path
 from .classify import RunResult
+from .scenarios import natural, parse_speed_scenario
+from .speed_split import speed_title
 
 __all__ = [
     "RUN_COLUMNS",
     "SCENARIO_TITLES",
     "per_recording",
+    "scenario_rank",
+    "scenario_title",
     "tidy",
     "write_frame",
 ]
@@ -60,6 +64,24 @@ SCENARIO_TITLES = {
     "backward": "Experiment B. Backward extrapolation",
     "interpolation": "Experiment C. Interpolation",
 }
+
+
+def scenario_title(name: object) -> str:
+    """A scenario's heading: the paper's title, a speed transfer's (``Speed transfer:
+    trained at 100, tested at 75``), else the name as given."""
+    return SCENARIO_TITLES.get(str(name)) or speed_title(name) or str(name)
+
+
+def scenario_rank(name: object) -> tuple:
+    """Sort key of scenarios: the paper's A, B, C, then speed transfers by test speed (the
+    within-speed arm first), then any other name."""
+    if name in SCENARIO_TITLES:
+        return (list(SCENARIO_TITLES).index(name),)
+    parsed = parse_speed_scenario(name)
+    if parsed is not None:
+        train, test = parsed
+        return (len(SCENARIO_TITLES), natural(test), train != (test,), natural("+".join(train)))
+    return (len(SCENARIO_TITLES) + 1, natural(str(name)))
 
 
 def _run_keys(run: RunResult) -> dict[str, object]:

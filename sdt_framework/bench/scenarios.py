@@ -9,6 +9,8 @@ class with severity levels L_min..L_max:
 - interpolation (C): train on L_min and L_max, test on the levels between.
 
 Healthy runs (no severity) train on all but the last and test on the last.
+The speed-transfer scenario (:mod:`.speed_split`) splits each speed's runs by
+one of these rules and trains at other speeds, under labels ``speed S -> T``.
 The allocation is a table (machine, scenario, run, condition, severity, side);
 a user-supplied CSV/TOML table replaces the rule, and the run writes the one
 it used. A (machine, scenario) in which some class lacks a training or a test
@@ -20,7 +22,7 @@ from __future__ import annotations
 import io
 import os
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -30,7 +32,16 @@ from ..csv_cells import unescape_frame
 from ..errors import SDTError
 from ..toml_files import decode_text, parse_toml, read_bytes
 
-__all__ = ["COLUMNS", "Run", "check_allocation", "load_allocation", "rule_allocation"]
+__all__ = [
+    "COLUMNS",
+    "Run",
+    "check_allocation",
+    "load_allocation",
+    "natural",
+    "parse_speed_scenario",
+    "rule_allocation",
+    "speed_scenario",
+]
 
 COLUMNS = ["machine", "scenario", "run", "condition", "severity", "side"]
 
@@ -43,10 +54,13 @@ class Run:
     run: str
     condition: str
     severity: int | None
+    #: the operating point it ran at (:func:`.speed_split.speed_key`), where known
+    speed: str | None = None
 
 
-def _natural(text: str) -> list[object]:
-    return [int(part) if part.isdigit() else part for part in re.split(r"(\d+)", text)]
+def natural(text: str) -> tuple[object, ...]:
+    """Sort key reading the digits in ``text`` as numbers (``healthy 2`` before ``healthy 10``)."""
+    return tuple(int(part) if part.isdigit() else part for part in re.split(r"(\d+)", text))
 
 
 def _sides(scenario: str, levels: list[int]) -> dict[int, str]:
@@ -70,9 +84,7 @@ def rule_allocation(runs: Iterable[Run], scenarios: Iterable[str]) -> pd.DataFra
             by_class.setdefault((run.machine, run.condition), []).append(run)
         for (_machine, _condition), members in sorted(by_class.items()):
             graded = [r for r in members if r.severity is not None]
-            plain = sorted(
-                (r for r in members if r.severity is None), key=lambda r: _natural(r.run)
-            )
+            plain = sorted((r for r in members if r.severity is None), key=lambda r: natural(r.run))
             for index, run in enumerate(plain):
                 side = "test" if index == len(plain) - 1 and len(plain) > 1 else "train"
                 rows.append((run, scenario, side))
@@ -148,12 +160,22 @@ def load_allocation(path: str | os.PathLike[str], runs: Iterable[Run]) -> pd.Dat
         line = f"{path}: entry {int(index) + 1}" if toml else f"{path}: row {int(index) + 2}"
         if row["side"] not in ("train", "test"):
             raise SDTError(f"{line}: side {row['side']!r} must be 'train' or 'test'")
-        if row["scenario"] not in ("forward", "backward", "interpolation"):
-            raise SDTError(f"{line}: unknown scenario {row['scenario']!r}")
+        speeds = _speed_sides(row["scenario"])
+        if row["scenario"] not in ("forward", "backward", "interpolation") and speeds is None:
+            raise SDTError(
+                f"{line}: unknown scenario {row['scenario']!r}; use forward, backward, "
+                f"interpolation or a speed transfer 'speed TRAIN -> TEST' (e.g. 'speed 100 -> 75')"
+            )
         run = known.get((str(row["machine"]), str(row["run"])))
         if run is None:
             raise SDTError(
                 f"{line}: no run {row['run']!r} on machine {row['machine']!r} in the data"
+            )
+        if speeds is not None and run.speed not in speeds[row["side"]]:
+            at = "carries no speed" if run.speed is None else f"runs at {run.speed}"
+            raise SDTError(
+                f"{line}: run {run.run!r} {at}; in {row['scenario']!r} a {row['side']} run "
+                f"is at {' or '.join(speeds[row['side']])}"
             )
         rows.append(
             (run.machine, row["scenario"], run.run, run.condition, run.severity, row["side"])
@@ -168,6 +190,26 @@ def load_allocation(path: str | os.PathLike[str], runs: Iterable[Run]) -> pd.Dat
             f"twice; a run sits on one side only"
         )
     return frame.sort_values(["machine", "scenario", "condition", "run"], ignore_index=True)
+
+
+def speed_scenario(train: Sequence[str], test: str) -> str:
+    """The label of a speed-transfer arm: ``speed 50+100 -> 75``, ``speed 75 -> 75``."""
+    return f"speed {'+'.join(train)} -> {test}"
+
+
+def parse_speed_scenario(name: object) -> tuple[tuple[str, ...], str] | None:
+    """(training speeds, test speed) of a ``speed TRAIN -> TEST`` label; None for another."""
+    text = str(name)
+    if not text.startswith("speed ") or " -> " not in text:
+        return None
+    train, _, test = text.removeprefix("speed ").rpartition(" -> ")
+    return (tuple(train.split("+")), test) if train and test else None
+
+
+def _speed_sides(scenario: str) -> dict[str, tuple[str, ...]] | None:
+    """The speeds each side of a speed-transfer label allows; None for another name."""
+    parsed = parse_speed_scenario(scenario)
+    return None if parsed is None else {"train": parsed[0], "test": (parsed[1],)}
 
 
 def check_allocation(allocation: pd.DataFrame) -> dict[tuple[str, str], str]:

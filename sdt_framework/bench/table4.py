@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from .results import SCENARIO_TITLES
+from .results import scenario_rank, scenario_title
 
 __all__ = ["NOTE", "Cell", "Table4", "build_table4", "table4", "table4_blocks", "table4_markdown"]
 
@@ -37,12 +37,10 @@ def table4(results: pd.DataFrame) -> pd.DataFrame:
     stats = pd.DataFrame({"mean": grouped.mean(), "sd": grouped.std(ddof=1), "n": grouped.count()})
     wide = stats.unstack(["machine", "classifier"])
     wide = wide.reorder_levels([1, 2, 0], axis=1).sort_index(axis=1)
-    scenario_order = {s: i for i, s in enumerate(SCENARIO_TITLES)}
-    return wide.sort_index(
-        key=lambda idx: (
-            idx.map(lambda v: scenario_order.get(v, 99)) if idx.name == "scenario" else idx
-        )
-    )
+    order = {
+        s: i for i, s in enumerate(sorted(set(stats.index.get_level_values(0)), key=scenario_rank))
+    }
+    return wide.sort_index(key=lambda idx: idx.map(order) if idx.name == "scenario" else idx)
 
 
 def table4_blocks(
@@ -50,12 +48,13 @@ def table4_blocks(
 ) -> Iterator[tuple[str, pd.DataFrame, list[str]]]:
     """(scenario, its block of ``table4(...)``, sensors in display order) per scenario.
 
-    Scenarios come in the paper's order (A, B, C); sensors in ``sensor_order``
+    Scenarios come in the paper's order (A, B, C), then speed transfers
+    (:func:`~.results.scenario_rank`); sensors in ``sensor_order``
     first, then any others in the block. Table 4 and the report's deltas walk
     the pivot through this one function.
     """
     present = set(wide.index.get_level_values(0))
-    for scenario in [s for s in SCENARIO_TITLES if s in present]:
+    for scenario in sorted(present, key=scenario_rank):
         block = wide.loc[scenario]
         sensors = [s for s in sensor_order if s in block.index]
         sensors += [s for s in block.index if s not in sensors]
@@ -94,8 +93,9 @@ class Block:
 
     @property
     def title(self) -> str:
-        """The paper's title of the scenario ("Experiment A. Forward extrapolation")."""
-        return SCENARIO_TITLES[self.scenario]
+        """The paper's title of the scenario ("Experiment A. Forward extrapolation"), or a
+        speed transfer's ("Speed transfer: trained at 100, tested at 75")."""
+        return scenario_title(self.scenario)
 
 
 @dataclass(frozen=True)

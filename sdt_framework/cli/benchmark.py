@@ -19,6 +19,7 @@ from rich.text import Text
 
 from .benchmark_table import print_table4
 from .common import console, err_console, registry, shorten_labels, warn
+from .dataset_inspect import parse_speeds
 
 EXIT_CLASSIFIER_FAILED = 1
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as a shell reports a process ended by Ctrl-C
@@ -121,7 +122,10 @@ def benchmark(
         None, "--feature-dtype", help="Round features to float16 or float32 before classifying."
     ),
     scenarios: str | None = typer.Option(
-        None, "--scenarios", help="Comma-separated: forward,backward,interpolation."
+        None, "--scenarios", help="Comma-separated: forward,backward,interpolation,speed-transfer."
+    ),
+    speeds: str | None = typer.Option(
+        None, "--speeds", help="Operating speeds to use, e.g. 50,75,100 (docs/report.md)."
     ),
     machines: str | None = typer.Option(None, "--machines", help="Comma-separated machines."),
     channels: str | None = typer.Option(None, "--channels", help="Comma-separated channels."),
@@ -171,6 +175,8 @@ def benchmark(
       sdt benchmark --quick --units 5
 
       sdt benchmark --quick --transfer "wilcoxon-786b10 -> adxl345,adxl357"
+
+      sdt benchmark --quick --speeds 50,75,100 --scenarios speed-transfer --classifiers lr
     """
     # Imported here so that `sdt --help` and the listing commands start fast.
     from ..bench import load_config, watch_interrupts
@@ -183,6 +189,7 @@ def benchmark(
         "features": features,
         "feature_dtype": feature_dtype,
         "scenarios": _names(scenarios),
+        "speeds": parse_speeds(speeds),
         "machines": _names(machines),
         "channels": _names(channels),
         "allocation": allocation,

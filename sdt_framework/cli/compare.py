@@ -203,6 +203,7 @@ def compare(
     from ..verdict import compare as run_compare
     from ..verdict import pair_folders, verdict
     from .compare_severity import check_zones, print_severity, severity_agreement, severity_json
+    from .compare_speed import print_speed_loss, speed_loss_json, speed_tables
 
     check_zones(zones)
     if len(results_dirs) > 2:
@@ -242,6 +243,7 @@ def compare(
     if len(folders) == 1:
         reg = registry(ctx)
         severity, note = severity_agreement(folders[0], zones, comparison.baseline, registry=reg)
+    speed = speed_tables(folders[-1], comparison.baseline)  # the loss under a speed shift
     if as_json:
         ranking = comparison.ranking
         print_json(
@@ -265,10 +267,13 @@ def compare(
                 },
                 "table": json.loads(comparison.table.to_json(orient="records")),
                 "severity": severity_json(severity, note),
+                "speed_loss": speed_loss_json(speed),
             }
         )
         return
     _print_tables(comparison)
+    if speed is not None:
+        print_speed_loss(speed, comparison.baseline)
     console.print(Text("Verdict", style="bold"))
     for finding in findings:  # user strings (sensor names) are printed as given
         console.print(Text.assemble((finding.scope, "bold"), ": ", finding.text), highlight=False)

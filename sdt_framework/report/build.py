@@ -20,6 +20,7 @@ from .load import ResultsFolder, load_results
 from .node_edge import node_blocks
 from .render import render_html, render_markdown
 from .severity import severity_blocks
+from .speed import speed_blocks
 from .style import sensor_colors
 from .tables import allocation_table, delta_table, failed_table, table4_table
 from .units import unit_blocks
@@ -180,6 +181,7 @@ def build_blocks(folder: ResultsFolder, registry: Any, figures_dir: Path) -> lis
         blocks.append(Paragraph(text))
     else:
         blocks.append(delta)
+    blocks += speed_blocks(folder)
     if not folder.failed.empty:
         blocks += [Heading("Failed runs", 2), failed_table(folder.failed)]
     blocks += _saturation(folder)

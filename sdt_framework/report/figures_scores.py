@@ -10,7 +10,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
-from ..bench.results import SCENARIO_TITLES
+from ..bench.results import scenario_rank, scenario_title
 from .style import figure_label, new_figure
 
 __all__ = ["best_class_f1", "plot_confusions", "plot_radar", "worst_cells"]
@@ -29,13 +29,14 @@ def best_class_f1(per_class: pd.DataFrame) -> pd.DataFrame:
 def plot_radar(per_class: pd.DataFrame, sensors: list[str], colors: dict[str, str]) -> Figure:
     """Radar charts of the best per-class F1: one per (machine, scenario).
 
-    Rows are machines, columns scenarios (A, B, C); each chart has one axis per
-    class of that machine and one closed polygon per sensor. Machines are kept
-    apart because their class sets differ (paper Fig. 6 pools Motor-4 faults).
+    Rows are machines, columns scenarios (A, B, C, then speed-transfer arms); each
+    chart has one axis per class of that machine and one closed polygon per sensor.
+    Machines are kept apart because their class sets differ (paper Fig. 6 pools
+    Motor-4 faults).
     """
     best = best_class_f1(per_class)
     machines = sorted(best["machine"].unique())
-    scenarios = [s for s in SCENARIO_TITLES if s in set(best["scenario"])]
+    scenarios = sorted(set(best["scenario"]), key=scenario_rank)
     fig = new_figure(4.6 * len(scenarios), 4.4 * len(machines) + 0.6)
     axes = fig.subplots(
         len(machines), len(scenarios), subplot_kw={"projection": "polar"}, squeeze=False
@@ -47,7 +48,7 @@ def plot_radar(per_class: pd.DataFrame, sensors: list[str], colors: dict[str, st
             classes = sorted(part["class"].unique())
             if len(classes) < 3:
                 ax.set_axis_off()
-                ax.set_title(f"{machine}\n{SCENARIO_TITLES[scenario]}\n(< 3 classes)", fontsize=9)
+                ax.set_title(f"{machine}\n{scenario_title(scenario)}\n(< 3 classes)", fontsize=9)
                 continue
             angles = np.linspace(0, 2 * np.pi, len(classes), endpoint=False)
             closed = np.append(angles, angles[0])
@@ -61,7 +62,7 @@ def plot_radar(per_class: pd.DataFrame, sensors: list[str], colors: dict[str, st
             ax.set_xticks(angles, names, fontsize=7)
             ax.set_ylim(0, 1)
             ax.set_yticks([0.25, 0.5, 0.75, 1.0], ["0.25", "0.5", "0.75", "1"], fontsize=6)
-            ax.set_title(f"{machine} — {SCENARIO_TITLES[scenario]}", fontsize=9, pad=14)
+            ax.set_title(f"{machine} — {scenario_title(scenario)}", fontsize=9, pad=14)
     handles, labels = axes[0][0].get_legend_handles_labels()
     if handles:
         fig.legend(handles, labels, loc="outside lower center", ncols=len(labels), fontsize=9)
@@ -128,7 +129,7 @@ def plot_confusions(confusion: pd.DataFrame, cells: pd.DataFrame) -> Figure:
         ax.set(xlabel="predicted class", ylabel="true class")
         score = f", macro F1 {cell['macro_f1']:.3f}" if "macro_f1" in cell else ""
         ax.set_title(
-            f"{cell['machine']}, {SCENARIO_TITLES.get(cell['scenario'], cell['scenario'])}\n"
+            f"{cell['machine']}, {scenario_title(cell['scenario'])}\n"
             f"{cell['sensor']} + "
             f"{str(cell['classifier']).upper()}{score}",
             fontsize=9,

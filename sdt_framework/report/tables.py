@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from ..bench.results import SCENARIO_TITLES
+from ..bench.results import scenario_title
 from ..bench.table4 import EMPTY, NOTE, build_table4, table4, table4_blocks
 from .document import Table, literal
 
@@ -24,7 +24,7 @@ def table4_table(results: pd.DataFrame, sensors: list[str]) -> Table:
         return Table(("",), ((EMPTY,),))
     rows: list[tuple[str, ...]] = []
     for block in table.blocks:  # Table4.rows(), with the sensors' names as literal text
-        rows.append((f"**{block.title}**",) + ("",) * len(table.columns))
+        rows.append((f"**{literal(block.title)}**",) + ("",) * len(table.columns))
         for sensor, cells in zip(block.sensors, block.cells, strict=True):
             rows.append((literal(sensor), *(cell.inline() for cell in cells)))
     return Table(tuple(map(literal, table.header)), tuple(rows), NOTE)
@@ -61,7 +61,7 @@ def delta_table(results: pd.DataFrame, sensors: list[str], reference: str) -> Ta
         order = [s for s in ordered if s != reference]
         if not order:
             continue
-        rows.append((f"**{SCENARIO_TITLES[scenario]}**",) + ("",) * len(columns))
+        rows.append((f"**{literal(scenario_title(scenario))}**",) + ("",) * len(columns))
         best = {col: delta[col].max() for col in columns}
         for sensor in order:
             cells = []

@@ -19,6 +19,9 @@ stack_folders(frames, labels)
     Two results tables as one, to compare two folders ("source" as treatment).
 verdict(comparison) -> list[Finding]
     Plain sentences, each citing its numbers.
+speed_arms, speed_loss, speed_loss_by_class, unpaired_arms, UNPAIRED ; recording_intervals
+    The loss of Macro F1 under a speed shift (speed-transfer arms, issue 43), per
+    sensor and per class, with intervals over repetitions and over test recordings.
 friedman_nemenyi(scores) -> Ranking ; plot_cd_diagram(ranking)
     Friedman test, Nemenyi post-hoc, critical difference and its diagram.
 """
@@ -32,11 +35,14 @@ from .folders import FOLDER_CELLS, FolderPair, folder_labels, pair_folders
 from .ranking import Ranking, critical_difference, friedman_nemenyi, q_alpha
 from .recordings import macro_f1
 from .sentences import Finding, verdict
+from .speed_loss import UNPAIRED, speed_arms, speed_loss, speed_loss_by_class, unpaired_arms
+from .speed_recordings import recording_intervals
 
 __all__ = [
     "CELL_KEYS",
     "FOLDER_CELLS",
     "LABELS",
+    "UNPAIRED",
     "Comparison",
     "Finding",
     "FolderPair",
@@ -50,6 +56,11 @@ __all__ = [
     "pair_folders",
     "plot_cd_diagram",
     "q_alpha",
+    "recording_intervals",
+    "speed_arms",
+    "speed_loss",
+    "speed_loss_by_class",
     "stack_folders",
+    "unpaired_arms",
     "verdict",
 ]

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import pandas as pd
 
-from ..bench.results import SCENARIO_TITLES
+from ..bench.results import scenario_rank
 from ..errors import SDTError
 from .aggregate import aggregate_rows, cell_rows
 from .equivalence import combine
@@ -253,9 +253,11 @@ def compare(
 
 
 def _sorted(table: pd.DataFrame, candidates: list[str]) -> pd.DataFrame:
-    """Cells, then groups, then overall; candidates in order; scenarios in the paper's order."""
+    """Cells, then groups, then overall; candidates in order; scenarios in the paper's order,
+    then speed transfers (:func:`~sdt_framework.bench.results.scenario_rank`)."""
     levels = {"cell": 0, "group": 1, "overall": 2}
-    scenarios = {s: i for i, s in enumerate(SCENARIO_TITLES)}
+    present = set(table["scenario"].dropna()) if "scenario" in table else set()
+    scenarios = {s: i for i, s in enumerate(sorted(present, key=scenario_rank))}
     rank = {c: i for i, c in enumerate(candidates)}
 
     def key(column: pd.Series) -> pd.Series:
