@@ -27,11 +27,13 @@ def severity_agreement(
     windows of ``reference``); a bad ``--zones`` value is an error.
     """
     from ..report import folder_machines, no_spec_line
-    from ..severity import assign_tables, sensor_bandwidths, zone_agreement
+    from ..severity import NO_VRMS, assign_tables, sensor_bandwidths, zone_agreement
 
     features = folder.features
-    if features is None or features.empty or "V_RMS" not in features.columns:
+    if features is None or features.empty:
         return None, "features.parquet with V_RMS is missing: no zone agreement"
+    if "V_RMS" not in features.columns:
+        return None, f"{NO_VRMS}: no zone agreement"
     config = folder.config
     machines = sorted(features["machine"].unique())
     specs = folder_machines(folder, registry).specs

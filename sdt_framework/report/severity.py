@@ -18,6 +18,7 @@ import numpy as np
 
 from ..errors import SDTError
 from ..severity import (
+    NO_VRMS,
     ZONES,
     Agreement,
     assign_tables,
@@ -149,8 +150,10 @@ def folder_agreement(folder: ResultsFolder, registry: Any = None) -> Agreement:
 
 def _agreement(folder: ResultsFolder, machines: dict[str, MachineSpec]) -> Agreement:
     features = folder.features
-    if features is None or features.empty or "V_RMS" not in features.columns:
+    if features is None or features.empty:
         raise SDTError("features.parquet with V_RMS is missing.")
+    if "V_RMS" not in features.columns:
+        raise SDTError(NO_VRMS + ".")
     config = folder.config
     assignments = assign_tables(
         sorted(features["machine"].unique()),

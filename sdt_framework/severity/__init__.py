@@ -36,7 +36,7 @@ estimate_running_speed -> SpeedEstimate ; running_speed
 from __future__ import annotations
 
 from ..speed import MAINS_HZ, SpeedEstimate, estimate_running_speed, running_speed
-from .agreement import Agreement, paired_zones, window_agreement, zone_agreement
+from .agreement import NO_VRMS, Agreement, paired_zones, window_agreement, zone_agreement
 from .alarms import ALARM_FRACTION, HEADROOM, RULE, CriterionII, alarm_bits, alarm_thresholds
 from .assign import assign_tables, spec_tables
 from .bands import band_label, sensor_bandwidths, vrms_bands
@@ -72,6 +72,7 @@ __all__ = [
     "LOW_EDGE_LINES",
     "MACHINE_GROUPS",
     "MAINS_HZ",
+    "NO_VRMS",
     "RULE",
     "V_RMS_BAND_HZ",
     "ZONES",

@@ -245,3 +245,12 @@ def zone_agreement(
         bands,
         warnings,
     )
+
+
+#: why a results folder's windows cannot be graded when its feature set holds no V_RMS
+#: (the ISO zones grade each window's velocity RMS, a paper8 feature; ``orders`` has none)
+NO_VRMS = (
+    "features.parquet holds no V_RMS (this run's feature set does not compute it): the ISO "
+    "zones grade each window's V_RMS, a paper8 feature; run with a set that holds it (e.g. "
+    "--features paper8+orders) to grade the windows"
+)
