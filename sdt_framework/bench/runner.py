@@ -23,6 +23,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 from ..data.cache import default_cache_dir
@@ -91,12 +92,10 @@ def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
         blocks,
         key=lambda b: (position[b.recording_id], sensor_position[b.sensor], b.unit, b.repeat),
     )
-    frames = []
+    meta = []  # one row per block, repeated below for each of its windows
     for b in blocks:
         rec = by_id[b.recording_id]
-        values = quantise_features(b.values, plan.feature_set, where=b.recording_id)
-        frame = pd.DataFrame(values, columns=list(plan.feature_set.feature_names))
-        meta = {
+        row = {
             "machine": rec.machine,
             "run": rec.run,
             "condition": rec.condition,
@@ -107,15 +106,18 @@ def _feature_frame(plan: Plan, blocks: list[FeatureBlock]) -> pd.DataFrame:
             "repeat": b.repeat,
         }
         if plan.config.units is not None:  # left out otherwise: features.parquet stays as it was
-            meta["unit"] = b.unit
+            row["unit"] = b.unit
         if plan.feature_set.needs_speed:  # text: the speed order features were computed at
-            meta["speed"] = plan.contexts[rec.recording_id].describe_speed()
-        for i, (name, value) in enumerate(meta.items()):
-            frame.insert(i, name, value)
-        frame.insert(len(meta), "acquisition", b.acquisition)
-        frame.insert(len(meta) + 1, "window", b.window)
-        frames.append(frame)
-    out = pd.concat(frames, ignore_index=True)
+            row["speed"] = plan.contexts[rec.recording_id].describe_speed()
+        meta.append(row)
+    windows = np.array([len(b.values) for b in blocks])
+    out = pd.DataFrame.from_records(meta)
+    out = out.loc[out.index.repeat(windows)].reset_index(drop=True)
+    out["acquisition"] = np.concatenate([b.acquisition for b in blocks])
+    out["window"] = np.concatenate([b.window for b in blocks])
+    values = [quantise_features(b.values, plan.feature_set, where=b.recording_id) for b in blocks]
+    names = list(plan.feature_set.feature_names)
+    out = pd.concat([out, pd.DataFrame(np.concatenate(values), columns=names)], axis=1)
     out["severity"] = out["severity"].astype("Int64")
     return out
 

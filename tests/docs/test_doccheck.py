@@ -132,3 +132,25 @@ def test_repaste_refuses_a_folder_without_a_dump_and_an_unknown_document(tmp_pat
     )
     assert main([str(tmp_path), "docs/nope.md"]) == 2
     assert "not a checked document: docs/nope.md" in capsys.readouterr().err
+
+
+def test_documents_side_by_side_keep_their_order_and_their_own_cpu(tmp_path):
+    """``--jobs 2``: each document's commands in order, each command's CPU its own.
+
+    The busy command (0.5 s of CPU) ends while the sleep beside it still runs;
+    summing the checker's finished children instead would charge the sleep
+    with the busy command's CPU.
+    """
+    from tools.doccheck.__main__ import _run_side_by_side
+
+    busy = "python3 -c \"import time; exec('while time.process_time() < 0.5: pass')\""
+    (tmp_path / "a.md").write_text(f"```\n$ {busy}\n$ echo a\na\n```\n")
+    (tmp_path / "b.md").write_text("```\n$ sleep 1.5\n$ echo b\nb\n```\n")
+    selected = {name: steps(tmp_path / name, tmp_path) for name in ("a.md", "b.md")}
+    results = list(_run_side_by_side(selected, "all", tmp_path / "cache", jobs=2))
+    assert {r.status for r in results} == {"passed"}
+    for doc in ("a.md", "b.md"):
+        assert [r.command.line for r in results if r.command.doc == doc] == [2, 3]
+    cpu = {r.command.text: r.cpu for r in results}
+    assert cpu[busy] >= 0.45
+    assert cpu["sleep 1.5"] < 0.2

@@ -1,23 +1,28 @@
-"""``python -m tools.doccheck [--mode fast|slow|all] [DOC ...]``: run, report, sum up.
+"""``python -m tools.doccheck [--mode fast|slow|all] [--jobs N] [DOC ...]``: run, report, sum up.
 
-Prints one line per command (PASS, FAIL with the reason and what was printed,
-SKIP with the reason), the skipped list, and last ``N passed, N failed, ...``;
-exits 1 when a command failed.
+Prints one line per command as it ends (PASS, FAIL with the reason and what was
+printed, SKIP with the reason), the skipped list, and last ``N passed, N failed,
+...``; exits 1 when a command failed. Documents are independent (one sandbox
+each), so ``--jobs`` of them run side by side, the ones with the most slow
+blocks first; a document's own commands always run in order.
 """
 
 from __future__ import annotations
 
 import argparse
 import os
+import queue
 import signal
 import sys
 import tempfile
 import time
 from collections import Counter
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 from .extract import ROOT, Command, all_steps
-from .runner import run_doc
+from .runner import Result, run_doc
+from .sandbox import stop_all
 
 LABEL = {"passed": "PASS", "failed": "FAIL", "skipped": "SKIP", "xfailed": "XFAIL"}
 
@@ -33,6 +38,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m tools.doccheck")
     parser.add_argument("--mode", choices=["fast", "slow", "all"], default="slow")
     parser.add_argument("--dump", type=Path, help="write each command's printed output here")
+    parser.add_argument("--jobs", type=int, default=2, help="documents run side by side")
     parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
     args = parser.parse_args(argv)
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # runs the sandboxes' clean-up
@@ -47,20 +53,19 @@ def check(args: argparse.Namespace, cache: Path) -> int:
     counts: Counter[str] = Counter()
     skipped: list[str] = []
     start, cpu = time.monotonic(), 0.0
-    for steps in selected.values():
-        for result in run_doc(steps, args.mode, cache, ROOT):
-            counts[result.status] += 1
-            if args.dump and result.status != "skipped":
-                dump(args.dump, result.command, result.printed)
-            label = LABEL.get(result.status, result.status.upper())
-            cpu += result.cpu
-            times = f"{result.seconds:.1f} s, CPU {result.cpu:.1f} s"
-            head = f"{label:5} {result.command.id} ({times}) $ "
-            print(head + result.command.text, flush=True)
-            if result.status == "skipped":
-                skipped.append(f"  {result.command.id}: {result.detail}")
-            elif result.status in {"failed", "xfailed"}:
-                print("      " + result.detail.replace("\n", "\n      "), flush=True)
+    for result in _run_side_by_side(selected, args.mode, cache, max(1, args.jobs)):
+        counts[result.status] += 1
+        if args.dump and result.status != "skipped":
+            dump(args.dump, result.command, result.printed)
+        label = LABEL.get(result.status, result.status.upper())
+        cpu += result.cpu
+        times = f"{result.seconds:.1f} s, CPU {result.cpu:.1f} s"
+        head = f"{label:5} {result.command.id} ({times}) $ "
+        print(head + result.command.text, flush=True)
+        if result.status == "skipped":
+            skipped.append(f"  {result.command.id}: {result.detail}")
+        elif result.status in {"failed", "xfailed"}:
+            print("      " + result.detail.replace("\n", "\n      "), flush=True)
     if skipped:
         print("skipped (cannot run here):\n" + "\n".join(skipped))
     order = ["passed", "failed", "skipped", "xfailed", "xpassed"]
@@ -68,6 +73,36 @@ def check(args: argparse.Namespace, cache: Path) -> int:
     took = f"{time.monotonic() - start:.0f} s, CPU {cpu:.0f} s"
     print(f"{summary} in {took} (documented commands)")
     return 1 if counts["failed"] else 0
+
+
+def _run_side_by_side(selected: dict, mode: str, cache: Path, jobs: int):
+    """Yield every document's results as they come, ``jobs`` documents at a time.
+
+    The documents with the most slow blocks start first, so the longest one
+    does not start last and leave a core idle at the end.
+    """
+    done: queue.Queue[Result | None] = queue.Queue()
+
+    def run(steps: list) -> None:
+        try:
+            for result in run_doc(steps, mode, cache, ROOT):
+                done.put(result)
+        finally:
+            done.put(None)  # this document is over
+
+    order = sorted(selected, key=lambda d: (-sum("slow" in s.notes for s in selected[d]), d))
+    pool = ThreadPoolExecutor(max_workers=jobs)
+    futures = [pool.submit(run, selected[doc]) for doc in order]
+    try:
+        for _ in order:
+            while (result := done.get()) is not None:
+                yield result
+        for future in futures:
+            future.result()  # an error in the checker itself surfaces here
+    finally:  # also on Ctrl-C or SIGTERM: stop what runs, start nothing more
+        if not all(f.done() for f in futures):
+            stop_all()
+        pool.shutdown(wait=True, cancel_futures=True)
 
 
 if __name__ == "__main__":

@@ -8,17 +8,21 @@ prints), and ``sdt`` is the one installed beside the running interpreter.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
-import resource
 import signal
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
 TMP = re.compile(r"(?<![\w.~/])/tmp/")
 KEEP_OUT = {".git", "results", "build"}
+_LIVE: set[int] = set()  # the sessions of the commands running now (documents run side by side)
+_LOCK = threading.Lock()
+_STOPPED = threading.Event()
 
 
 class Sandbox:
@@ -57,39 +61,60 @@ class Sandbox:
     def run(self, command: str, columns: int, timeout: float) -> tuple[int, str, float, float]:
         """Exit status, what the terminal shows (stdout and stderr), wall and CPU seconds.
 
-        CPU seconds (the command and its workers) do not depend on the machine's
-        load as wall seconds do, so they size the test suite's share.
+        CPU seconds (the command and its workers, from ``wait4``) do not depend on
+        the machine's load as wall seconds do, nor on the other documents running
+        beside it, so they size the test suite's share.
 
         The status is the shell's ``$?``, of a pipeline's last command as a user
         sees it (``sdt ... | head -3`` is not failed by the pipe closing early);
         a crash before the pipe still shows as a traceback or missing lines.
         """
         command = TMP.sub(f"{self.root}/tmp/", command)
-        start, cpu = time.monotonic(), _children_cpu()
-        process = subprocess.Popen(
-            ["bash", "-c", command],
-            cwd=self.root,
-            env=self.environment(columns),
-            stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
-            start_new_session=True,
-        )
+        start = time.monotonic()
+        with _LOCK:
+            if _STOPPED.is_set():
+                raise KeyboardInterrupt("the checker is stopping")
+            process = subprocess.Popen(
+                ["bash", "-c", command],
+                cwd=self.root,
+                env=self.environment(columns),
+                stdout=subprocess.PIPE,
+                stderr=subprocess.STDOUT,
+                start_new_session=True,
+            )
+            _LIVE.add(process.pid)
+        expired = threading.Event()
+        timer = threading.Timer(timeout, _stop, (process.pid, expired))
+        timer.start()
         try:
-            raw, _ = process.communicate(timeout=timeout)
-            status = process.returncode
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)  # the command's workers too
-            raw, _ = process.communicate()
-            status, raw = -1, raw + f"\n(stopped after {timeout:.0f} s)".encode()
+            raw = process.stdout.read() if process.stdout else b""
+            # wait4, not wait: this command's CPU (its workers' too), whatever else runs
+            _, code, usage = os.wait4(process.pid, 0)
+            process.returncode = status = os.waitstatus_to_exitcode(code)
         finally:  # the checker stopped (Ctrl-C, SIGTERM): stop the command it started
-            if process.poll() is None:
-                os.killpg(process.pid, signal.SIGKILL)
+            timer.cancel()
+            if process.returncode is None:
+                _stop(process.pid, expired)
+            with _LOCK:
+                _LIVE.discard(process.pid)
+        if expired.is_set():
+            status, raw = -1, raw + f"\n(stopped after {timeout:.0f} s)".encode()
         printed = raw.decode("utf-8", "replace")
         printed = printed.replace(f"{self.root}/tmp/", "/tmp/").replace(f"{self.root}/", "")
-        return status, printed, time.monotonic() - start, _children_cpu() - cpu
+        return status, printed, time.monotonic() - start, usage.ru_utime + usage.ru_stime
 
 
-def _children_cpu() -> float:
-    """User and system seconds of this process's finished children so far."""
-    used = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return used.ru_utime + used.ru_stime
+def _stop(pid: int, expired: threading.Event) -> None:
+    """SIGKILL the command's whole session (its workers too), noting that it was stopped."""
+    expired.set()
+    with contextlib.suppress(ProcessLookupError):  # it ended meanwhile
+        os.killpg(pid, signal.SIGKILL)
+
+
+def stop_all() -> None:
+    """Stop every running command and start no other (the checker was interrupted)."""
+    with _LOCK:
+        _STOPPED.set()
+        for pid in _LIVE:
+            with contextlib.suppress(ProcessLookupError):
+                os.killpg(pid, signal.SIGKILL)
