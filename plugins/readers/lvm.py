@@ -25,13 +25,17 @@ is refused: LabVIEW ends every line, so a last line without a line break is a
 value cut off (``0.330`` of ``0.330112``), and a segment holding fewer rows
 than a channel's ``Samples`` lost its end. lvm_read turns a cell it cannot
 parse into NaN (refused by name); a header field that is not a number is named
-with its line.
+with its line. A parsed file is kept for the next call on the same content
+(SHA-256 of the file's bytes, the last two files): scanning, probing and reading
+each channel of a file parse it once in a process, not once per call.
 """
 
 from __future__ import annotations
 
+import hashlib
 import re
 from collections import Counter
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -74,10 +78,22 @@ _AST_OBJECT = re.compile(r"<ast\.\w+ object at 0x[0-9a-fA-F]+>")
 
 
 def _load(path: Path) -> dict[Any, Any]:
-    import lvm_read
-
+    """The parsed file (shared between calls on the same content: never modify it)."""
     size = check_parse_size(path, "LVM", LVM_MAX_BYTES, LVM_PARSE_BYTES_PER_BYTE, _ADVICE)
     _require_last_line(path, size)
+    try:
+        digest = hashlib.sha256(path.read_bytes()).hexdigest()
+    except OSError as exc:
+        raise DataFileError(f"{path}: cannot read ({exc.strerror or brief(exc)})") from None
+    return _parse(path, digest)
+
+
+@lru_cache(maxsize=2)
+def _parse(path: Path, digest: str) -> dict[Any, Any]:
+    """lvm_read's parse of ``path``, each segment's data as a float64 array of its columns;
+    ``digest`` (of the bytes) keys the cache, so a changed file is parsed again."""
+    import lvm_read
+
     try:
         lvm = lvm_read.read(str(path), read_from_pickle=False, dump_file=False)
     except OSError as exc:
@@ -90,6 +106,7 @@ def _load(path: Path) -> dict[Any, Any]:
         data = data[:, :width] if data.ndim == 2 else np.empty((0, width))
         if data.shape[1] < width:
             data = np.pad(data, ((0, 0), (0, width - data.shape[1])), constant_values=np.nan)
+        data.flags.writeable = False  # shared by later calls
         lvm[s]["data"] = data
     return lvm
 

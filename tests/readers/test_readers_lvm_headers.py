@@ -211,3 +211,21 @@ def test_a_column_name_row_without_x_value_is_named(sdt_main, tmp_path):
         f"first cell is 'X_Value', and lvm_read finds none (a file written by another program, "
         f"or edited); add that row, or export the file again from LabVIEW"
     )
+
+
+def test_a_file_rewritten_with_the_same_size_and_time_is_parsed_again(tmp_path, readers):
+    """The parse kept for the next call is keyed by the file's content, not its name,
+    size or time: a corrected file is read as it now stands."""
+    import os
+
+    file = tmp_path / "r.lvm"
+    rate = 1000.0
+    values, sizes = {}, set()
+    for k, level in enumerate((0.25, 0.5)):
+        tone = level * np.sin(2 * np.pi * 50 * np.arange(200) / rate)
+        file.write_text(lvm_text([[Channel("acc", tone, 1 / rate)]]), encoding="utf-8")
+        os.utime(file, ns=(1_700_000_000_000_000_000, 1_700_000_000_000_000_000))
+        sizes.add(file.stat().st_size)
+        values[k] = read_signal(file, readers, "acc")
+        np.testing.assert_allclose(values[k][0], tone, atol=1e-6)  # LabVIEW's 6 decimals
+    assert len(sizes) == 1  # the same size and time: only the content tells them apart
