@@ -28,6 +28,7 @@ naming the file and the field.
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
@@ -35,7 +36,13 @@ from .errors import SpecFileError, one_line
 from .specs import MachineSpec
 from .toml_files import read_toml, validate_file
 
-__all__ = ["MACHINE_FILE", "given_machines", "load_machine_file", "machines_from_tables"]
+__all__ = [
+    "MACHINE_FILE",
+    "given_machines",
+    "load_machine_file",
+    "machines_from_tables",
+    "spec_at_speeds",
+]
 
 #: the file beside a manifest that describes its machines
 MACHINE_FILE = "machines.toml"
@@ -113,3 +120,32 @@ def given_machines(
     if isinstance(given, str):
         return load_machine_file(Path(given).expanduser())
     return machines_from_tables(given, where, "machine_specs.")
+
+
+def spec_at_speeds(
+    name: str, spec: MachineSpec, speeds: Iterable[str]
+) -> tuple[MachineSpec | None, str | None]:
+    """``spec`` when machine ``name`` is recorded only at the speed it is for, else a note.
+
+    A spec holds one operating point (the rig's Motor-2 at 100 %): its shaft
+    speed and bearing lines do not hold at another speed, so a machine with
+    recordings at another one (``speeds``: their % labels) gets no spec, and the
+    note says what to give instead. Both pump datasets decide it here.
+    """
+    at = sorted(set(speeds), key=_by_number)
+    if at == [f"{spec.speed_percent:g}"]:
+        return spec, None
+    return None, (
+        f"{name}: the rig's machine spec is for {spec.speed_percent:g} % speed "
+        f"({spec.shaft_rpm:g} rpm), the recordings are at {', '.join(at)} % (each carries its "
+        f"speed_rpm): no machine spec (no defect lines, no default zone table); give one in the "
+        f"config's [benchmark.machine_specs.{name}] (docs/severity.md)"
+    )
+
+
+def _by_number(label: str) -> tuple[int, float, str]:
+    """Speed labels in numeric order (``50, 75, 100``), any other text after them."""
+    try:
+        return 0, float(label), label
+    except ValueError:
+        return 1, 0.0, label

@@ -43,7 +43,7 @@ def test_nln_emp_at_another_speed_gets_no_spec_and_a_note(tmp_path) -> None:
     (note,) = dataset.notes
     assert note.startswith(
         "Motor-2: the rig's machine spec is for 100 % speed (1480 rpm), the recordings are "
-        "at 50 %: no machine spec"
+        "at 50 % (each carries its speed_rpm): no machine spec"
     )
     assert "[benchmark.machine_specs.Motor-2]" in note
 

@@ -32,6 +32,7 @@ import numpy as np
 from sdt_framework.data import ArrayCache, DataFileError, Dataset, Recording, Skipped
 from sdt_framework.data.recording import measurement_groups
 from sdt_framework.errors import SDTError
+from sdt_framework.machine_files import spec_at_speeds
 from sdt_framework.specs import MachineSpec
 
 from ..pump_rig import rig_machines
@@ -183,26 +184,17 @@ def open_nln_emp(
 
 
 def _machines(recordings: list[Recording]) -> tuple[dict[str, MachineSpec], list[str]]:
-    """The rig's machines read at the speed their spec is for, and a note for each other.
-
-    A spec holds one operating point (Motor-2 at 100 %): its shaft speed and
-    bearing lines do not hold at another speed folder, so a machine read at
-    another speed gets no spec, and the note says what to give instead.
-    """
+    """The rig's machines read at the speed their spec is for, and a note for each other
+    (:func:`~sdt_framework.machine_files.spec_at_speeds`, as the synthetic pump decides)."""
     rig = rig_machines()
     machines, notes = {}, []
     for name in sorted({r.machine for r in recordings} & set(rig)):
-        spec = rig[name]
-        speeds = sorted({r.speed or "" for r in recordings if r.machine == name})
-        if speeds == [f"{spec.speed_percent:g}"]:
+        speeds = [r.speed or "" for r in recordings if r.machine == name]
+        spec, note = spec_at_speeds(name, rig[name], speeds)
+        if spec is not None:
             machines[name] = spec
-            continue
-        notes.append(
-            f"{name}: the rig's machine spec is for {spec.speed_percent:g} % speed "
-            f"({spec.shaft_rpm:g} rpm), the recordings are at {', '.join(speeds)} %: no machine "
-            f"spec (no defect lines, no default zone table); give one in the config's "
-            f"[benchmark.machine_specs.{name}] (docs/severity.md)"
-        )
+        if note:
+            notes.append(note)
     return machines, notes
 
 

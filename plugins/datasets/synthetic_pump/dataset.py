@@ -23,6 +23,7 @@ import numpy as np
 from sdt_framework.data import Dataset, Recording
 from sdt_framework.data.recording import measurement_groups
 from sdt_framework.errors import SDTError
+from sdt_framework.machine_files import spec_at_speeds
 
 from . import model as m
 from . import speeds as sp
@@ -151,27 +152,18 @@ class SyntheticPump(Dataset):
 
 
 def _specs(machines: list[m.Machine]) -> tuple[dict, list[str]]:
-    """The rig's spec of each machine generated at its spec's speed only, a note for another.
-
-    A spec holds one operating point (Motor-2 at 100 %): its shaft speed and bearing lines
-    do not hold at another speed, as the NLN-EMP reader hands them; each recording carries
-    its own speed (``speed_rpm``).
-    """
+    """The rig's spec of each machine generated at its spec's speed only, a note for another
+    (:func:`~sdt_framework.machine_files.spec_at_speeds`, as the NLN-EMP reader decides)."""
     found: dict[str, list[str]] = {}
     for machine in machines:
         found.setdefault(machine.name, []).append(machine.speed)
     specs, notes = {}, []
     for name, at in found.items():
-        spec = m.RIG[name]
-        if at == [f"{spec.speed_percent:g}"]:
+        spec, note = spec_at_speeds(name, m.RIG[name], at)
+        if spec is not None:
             specs[name] = spec
-            continue
-        notes.append(
-            f"{name}: the rig's machine spec is for {spec.speed_percent:g} % speed "
-            f"({spec.shaft_rpm:g} rpm), the recordings are at {', '.join(at)} % (each carries "
-            f"its speed_rpm): no machine spec (no defect lines, no default zone table); give one "
-            f"in the config's [benchmark.machine_specs.{name}] (docs/severity.md)"
-        )
+        if note:
+            notes.append(note)
     return specs, notes
 
 
