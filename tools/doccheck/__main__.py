@@ -41,6 +41,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--jobs", type=int, default=2, help="documents run side by side")
     parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
     args = parser.parse_args(argv)
+    if args.jobs < 1:
+        parser.error(f"--jobs {args.jobs}: give 1 or more documents to run side by side")
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # runs the sandboxes' clean-up
     with tempfile.TemporaryDirectory(prefix="doccheck-cache-") as folder:
         cache = Path(os.environ.get("SDT_CACHE_DIR") or folder)  # one cache for every document
@@ -53,7 +55,7 @@ def check(args: argparse.Namespace, cache: Path) -> int:
     counts: Counter[str] = Counter()
     skipped: list[str] = []
     start, cpu = time.monotonic(), 0.0
-    for result in _run_side_by_side(selected, args.mode, cache, max(1, args.jobs)):
+    for result in _run_side_by_side(selected, args.mode, cache, args.jobs):
         counts[result.status] += 1
         if args.dump and result.status != "skipped":
             dump(args.dump, result.command, result.printed)
