@@ -92,7 +92,7 @@ ALLOWED: dict[str, set[str]] = {
         "toml_files",
     },
     "verdict": {"bench", "errors", "seeding"},
-    "severity": {"errors", "seeding", "specs", "speed", "toml_files", "units", "verdict"},
+    "severity": {"chain", "errors", "seeding", "specs", "speed", "toml_files", "units", "verdict"},
     "explore": {
         "bench",
         "data",

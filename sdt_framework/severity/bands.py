@@ -1,11 +1,12 @@
 """The band each sensor's V_RMS really covers: the zone table's band clipped to its chain.
 
 The V_RMS feature sums 10-1000 Hz, but a chain passes only up to its
-bandwidth (its lowest analog or digital cut-off, or its Nyquist frequency:
-:func:`.spectra.chain_bandwidth`); the LIS3DH in high-resolution mode at
-1344 Hz passes up to 149 Hz. Its V_RMS is then a 10-149 Hz value, and its
-zones grade only what lies below 149 Hz: the label says so and a warning names
-both bands. The feature values are not changed (the paper's Table 4 stands).
+bandwidth (its lowest mechanical, analog or digital corner, or its Nyquist
+frequency: :func:`.spectra.chain_bandwidth`, the chain's own rule); the
+LIS3DH in high-resolution mode at 1344 Hz passes up to 149 Hz. Its V_RMS is
+then a 10-149 Hz value, and its zones grade only what lies below 149 Hz: the
+label says so and a warning names both bands. The feature values are not
+changed (the paper's Table 4 stands).
 """
 
 from __future__ import annotations

@@ -10,12 +10,15 @@ without it reads a sine 22.5 % high under Hann: sqrt(1.5) = 1.2247).
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from scipy import signal
 
+from ..chain import passband
 from ..errors import SDTError
+from ..specs import SensorSpec
 from ..units import G_N
 
 __all__ = [
@@ -73,14 +76,15 @@ class Spectrum:
         return f"{text} ({self.note})" if self.note else text
 
 
-def chain_bandwidth(spec: object) -> float:
-    """A sensor chain's usable bandwidth: the lowest of its analog/digital cut-offs and Nyquist."""
-    cutoffs = [getattr(spec, name, None) for name in ("analog_cutoff_hz", "digital_cutoff_hz")]
-    rate = spec.sampling_rate_hz
-    # a chain at the recording's own rate (native-reference): the recording's Nyquist limits
-    # it, and envelope_band caps the band at 0.45 x fs
-    nyquist = rate / 2 if isinstance(rate, (int, float)) else float("inf")
-    return float(min([c for c in cutoffs if c] + [nyquist]))
+def chain_bandwidth(spec: SensorSpec) -> float:
+    """A sensor chain's usable bandwidth: its lowest mechanical, analog or digital corner, or
+    its output Nyquist frequency, by the chain's own rule (:func:`~sdt_framework.chain.passband`).
+
+    No recording's rate bounds it here (an unbounded one is given), so a chain at the
+    recording's own rate (native-reference) has no bound (inf): ``envelope_band`` caps
+    the band at 0.45 x fs of the recording it reads.
+    """
+    return passband(spec, math.inf).top_hz
 
 
 def envelope_band(fs: float, bandwidth_hz: float, top_hz: float = 8000.0) -> tuple[float, float]:

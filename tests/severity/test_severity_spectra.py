@@ -72,3 +72,26 @@ def test_an_envelope_line_between_two_lines_reads_its_amplitude(offset: float) -
     # the envelope is 1 + 0.3 cos: its line reads 0.3 gE wherever it falls (Hann: 0.255)
     assert spec.values[near].max() == pytest.approx(depth, rel=5e-3)
     assert spec.unit == "gE" and spec.window == "flat-top"
+
+
+@pytest.mark.parametrize(
+    ("corners", "expected"),
+    [
+        # (mechanical, analog, digital) -3 dB corners at 3200 Hz: the lowest sets the band
+        ((500.0, 1000.0, None), 500.0),  # a mechanical corner below the electrical ones
+        ((None, 1000.0, 800.0), 800.0),
+        ((5000.0, None, None), 1600.0),  # above the output Nyquist: Nyquist bounds it
+    ],
+)
+def test_chain_bandwidth_is_the_lowest_corner_of_every_stage(adxl345, corners, expected):
+    """The envelope band and the V_RMS band check read a chain's band from every stage the
+    chain runs, the mechanical low-pass included (it was left out: an ISM330DHCX at 6667 Hz,
+    mechanical corner 2600 Hz, read 3333.5 Hz)."""
+    from sdt_framework.severity import chain_bandwidth
+
+    mech, analog, digital = corners
+    spec = adxl345.model_copy(
+        update={"sampling_rate_hz": 3200.0, "mech_cutoff_hz": mech, "analog_cutoff_hz": analog,
+                "digital_cutoff_hz": digital}
+    )  # fmt: skip
+    assert chain_bandwidth(spec) == expected
