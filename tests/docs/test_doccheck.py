@@ -154,3 +154,15 @@ def test_documents_side_by_side_keep_their_order_and_their_own_cpu(tmp_path):
     cpu = {r.command.text: r.cpu for r in results}
     assert cpu[busy] >= 0.45
     assert cpu["sleep 1.5"] < 0.2
+
+
+def test_a_command_past_its_time_limit_is_stopped_and_an_unknown_document_refused(tmp_path, capsys):
+    """The time limit kills the command's whole session and says so; a document name
+    that holds no command is one line and exit 2, not an empty pass."""
+    from tools.doccheck.__main__ import main
+    from tools.doccheck.sandbox import Sandbox
+
+    status, printed, _, _ = Sandbox(tmp_path, tmp_path, tmp_path).run("sleep 30", 80, 1.0)
+    assert status == -1 and "(stopped after 1 s)" in printed
+    assert main(["--mode", "fast", "docs/nosuch.md"]) == 2
+    assert capsys.readouterr().err.startswith("error: no such document: docs/nosuch.md;")

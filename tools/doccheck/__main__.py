@@ -51,7 +51,13 @@ def main(argv: list[str] | None = None) -> int:
 
 def check(args: argparse.Namespace, cache: Path) -> int:
     """Run the selected documents in ``args`` with the shared ``cache``; 1 if one failed."""
-    selected = {d: s for d, s in all_steps().items() if not args.docs or d in args.docs}
+    found = all_steps()
+    unknown = [d for d in args.docs if d not in found]
+    if unknown:
+        print(f"error: no such document: {', '.join(unknown)}; give README.md or docs/NAME.md "
+              f"({len(found)} documents hold commands)", file=sys.stderr)  # fmt: skip
+        return 2
+    selected = {d: s for d, s in found.items() if not args.docs or d in args.docs}
     counts: Counter[str] = Counter()
     skipped: list[str] = []
     start, cpu = time.monotonic(), 0.0

@@ -90,6 +90,7 @@ class Sandbox:
             raw = process.stdout.read() if process.stdout else b""
             # wait4, not wait: this command's CPU (its workers' too), whatever else runs
             _, code, usage = os.wait4(process.pid, 0)
+            stopped = expired.is_set()  # by the timer before it ended, not after
             process.returncode = status = os.waitstatus_to_exitcode(code)
         finally:  # the checker stopped (Ctrl-C, SIGTERM): stop the command it started
             timer.cancel()
@@ -97,7 +98,7 @@ class Sandbox:
                 _stop(process.pid, expired)
             with _LOCK:
                 _LIVE.discard(process.pid)
-        if expired.is_set():
+        if stopped:
             status, raw = -1, raw + f"\n(stopped after {timeout:.0f} s)".encode()
         printed = raw.decode("utf-8", "replace")
         printed = printed.replace(f"{self.root}/tmp/", "/tmp/").replace(f"{self.root}/", "")
