@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import signal
 import sys
 from pathlib import Path
 
@@ -164,5 +165,9 @@ def test_a_command_past_its_time_limit_is_stopped_and_an_unknown_document_refuse
 
     status, printed, _, _ = Sandbox(tmp_path, tmp_path, tmp_path).run("sleep 30", 80, 1.0)
     assert status == -1 and "(stopped after 1 s)" in printed
+    before = signal.getsignal(signal.SIGTERM)
     assert main(["--mode", "fast", "docs/nosuch.md"]) == 2
     assert capsys.readouterr().err.startswith("error: no such document: docs/nosuch.md;")
+    # main() puts back the caller's SIGTERM handler: a test run after it in the same
+    # process must see its own (this failed CI once, its handler exiting pytest's worker)
+    assert signal.getsignal(signal.SIGTERM) is before

@@ -43,10 +43,15 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.jobs < 1:
         parser.error(f"--jobs {args.jobs}: give 1 or more documents to run side by side")
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # runs the sandboxes' clean-up
-    with tempfile.TemporaryDirectory(prefix="doccheck-cache-") as folder:
-        cache = Path(os.environ.get("SDT_CACHE_DIR") or folder)  # one cache for every document
-        return check(args, cache)
+    # SIGTERM exits through the sandboxes' clean-up; the caller's handler is put back after,
+    # so a test calling main() leaves its process as it found it.
+    before = signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
+    try:
+        with tempfile.TemporaryDirectory(prefix="doccheck-cache-") as folder:
+            cache = Path(os.environ.get("SDT_CACHE_DIR") or folder)  # one cache for all documents
+            return check(args, cache)
+    finally:
+        signal.signal(signal.SIGTERM, before)
 
 
 def check(args: argparse.Namespace, cache: Path) -> int:
