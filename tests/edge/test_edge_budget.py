@@ -57,6 +57,16 @@ def test_split_report_costs_the_sum_of_its_uplinks(paper8):
     assert dr0.messages_per_day == 288
 
 
+def test_a_report_of_many_uplinks_costs_each_uplink_once(paper8):
+    # 1000 axes x 32 bytes = 32000 application bytes at DR0 (51 per uplink): 627 uplinks
+    # of 51 bytes (PHY 64: 85.25 symbols, as above) and one of 32000 - 627 x 51 = 23 bytes:
+    # PHY 36, ceil((288 - 48 + 44) / 40) = 8 -> 8 + 8 x 5 = 48 symbols after the preamble.
+    dr0 = edge_budget(paper8, axes=1000, region="EU868").rows[0]
+    assert dr0.messages_per_report == math.ceil(32000 / 51) == 628
+    assert dr0.time_on_air_s == pytest.approx((627 * 85.25 + 12.25 + 48) * 32.768e-3, rel=1e-12)
+    assert dr0.longest_message_s == pytest.approx(85.25 * 32.768e-3)
+
+
 def test_duty_cycle_sets_the_shortest_interval(paper8):
     # 1 % in EU868: T_off = T/0.01 - T, so one report per T/0.01 at best
     slow = edge_budget(paper8, axes=3, interval_s=300, region="EU868").rows[0]
