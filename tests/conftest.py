@@ -26,6 +26,7 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import os
+import subprocess
 import sys
 import textwrap
 from collections.abc import Callable, Iterator
@@ -117,6 +118,25 @@ def fake_dist(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[FakeD
         sys.modules.pop(module, None)
 
 
+@pytest.fixture
+def sdt_in_process(monkeypatch, capsys, tmp_path):
+    """``sdt(*args, env=...)`` as the reliability tests' ``sdt`` fixture gives it (a
+    ``CompletedProcess``: exit status, stdout, stderr; the cache in the test's folder), but
+    in this process: for commands that end before any worker starts (a bad input refused,
+    a file inspected or checked), where a real process adds two seconds of imports and
+    checks nothing more. Signals, memory caps, orphans and workers keep ``run_sdt``."""
+
+    def run(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
+        with monkeypatch.context() as patch:
+            for name, value in {"SDT_CACHE_DIR": str(tmp_path / "cache"), **(env or {})}.items():
+                patch.setenv(name, value)
+            capsys.readouterr()  # what the test printed before is not the command's
+            code, out, err = _sdt_here(args, patch, capsys)
+        return subprocess.CompletedProcess(["sdt", *args], code, out, err)
+
+    return run
+
+
 @pytest.fixture(scope="session")
 def registry():
     """The installed registry (built-in plugins), shared: a test that adds specs builds its own."""
@@ -129,23 +149,25 @@ def readers(registry):
     return registry.signal_readers()
 
 
+def _sdt_here(args: tuple[str, ...], monkeypatch, capsys) -> tuple[int, str, str]:
+    """``sdt ARGS`` through the console script's entry point in this process:
+    (exit status, stdout, stderr), the status as the interpreter would exit with it."""
+    from sdt_framework.cli.entry import main
+
+    monkeypatch.setattr(sys, "argv", ["sdt", *args])
+    try:
+        main()
+        code = 0
+    except SystemExit as exc:
+        code = exc.code if isinstance(exc.code, int) else int(exc.code is not None)
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
 @pytest.fixture
 def sdt_main(monkeypatch, capsys):
-    """``sdt_main(*args)``: ``main()`` in this process: (exit status, stdout, stderr)."""
-
-    from sdt_framework.cli.main import main
-
-    def run(*args: str) -> tuple[int, str, str]:
-        monkeypatch.setattr(sys, "argv", ["sdt", *args])
-        try:
-            main()
-            code = 0
-        except SystemExit as exc:
-            code = exc.code if isinstance(exc.code, int) else 1
-        out = capsys.readouterr()
-        return code, out.out, out.err
-
-    return run
+    """``sdt_main(*args)``: ``sdt`` in this process: (exit status, stdout, stderr)."""
+    return lambda *args: _sdt_here(args, monkeypatch, capsys)
 
 
 #: the built-in profiles of paper Table 1, as their plugins register them (not copies that

@@ -4,8 +4,6 @@ from __future__ import annotations
 
 import json
 import re
-import subprocess
-import sys
 
 import pytest
 from typer.testing import CliRunner
@@ -56,16 +54,8 @@ def test_radio_override_scales_energy():
         (["--axes", "0"], "error: --axes must be 1 or more, got 0"),
     ],
 )
-def test_bad_input_is_one_line_and_exit_2(args, message):
-    result = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", "budget", *args],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
-    assert result.returncode == 2
-    lines = [line for line in result.stderr.splitlines() if line.strip()]
-    assert len(lines) == 1 and lines[0].startswith(message), result.stderr
+def test_bad_input_is_one_line_and_exit_2(sdt_main, args, message):
+    assert _one_line_exit_2(sdt_main, *args).startswith(message)
 
 
 @pytest.mark.parametrize(
@@ -82,15 +72,11 @@ def test_other_bad_input_raises_the_user_error(args, message):
     assert message in str(result.exception)
 
 
-def _one_line_exit_2(*args: str) -> str:
-    result = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", "budget", *args],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
-    lines = [line for line in result.stderr.splitlines() if line.strip()]
-    assert result.returncode == 2 and len(lines) == 1, (result.returncode, result.stderr)
+def _one_line_exit_2(sdt_main, *args: str) -> str:
+    """``sdt budget ARGS`` (in this process: refused before any work): its one stderr line."""
+    code, _, err = sdt_main("budget", *args)
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert code == 2 and len(lines) == 1, (code, err)
     return lines[0]
 
 
@@ -122,8 +108,8 @@ def _one_line_exit_2(*args: str) -> str:
         (["--sensor", "adxl345", "--voltage", "3.3"], "error: --voltage sets the radio table"),
     ],
 )  # fmt: skip
-def test_values_that_would_be_ignored_or_guessed_are_one_line_exit_2(args, message):
-    assert _one_line_exit_2(*args).startswith(message)
+def test_values_that_would_be_ignored_or_guessed_are_one_line_exit_2(sdt_main, args, message):
+    assert _one_line_exit_2(sdt_main, *args).startswith(message)
 
 
 def test_own_cell_with_its_figures_is_used_and_capped(paper8):

@@ -2,9 +2,6 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import numpy as np
 import pytest
 
@@ -175,16 +172,10 @@ def test_interval_shorter_than_acquisition_plus_transmission_is_refused(sensor, 
         ),
     ],
 )
-def test_node_bad_input_is_one_line_and_exit_2(args, message):
-    result = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", "budget", "--sensor", "adxl345", *args],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
-    assert result.returncode == 2
-    lines = [line for line in result.stderr.splitlines() if line.strip()]
-    assert len(lines) == 1 and lines[0].startswith(message), result.stderr
+def test_node_bad_input_is_one_line_and_exit_2(sdt_main, args, message):
+    code, _, err = sdt_main("budget", "--sensor", "adxl345", *args)  # refused before any work
+    lines = [line for line in err.splitlines() if line.strip()]
+    assert code == 2 and len(lines) == 1 and lines[0].startswith(message), err
 
 
 def test_non_dominated_by_hand():

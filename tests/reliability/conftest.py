@@ -1,6 +1,7 @@
 """Shared fixtures of the reliability tests: a small benchmark, a folder nobody may write,
-and ``sdt`` run as a user runs it (a real process: exit status and stderr as printed; the
-in-process ``sdt_main`` is in tests/conftest.py)."""
+and ``sdt`` run as a user runs it (a real process: exit status and stderr as printed). A test
+file whose commands end before any worker starts swaps in ``sdt_in_process`` (same calls and
+result, no process start; tests/conftest.py)."""
 
 from __future__ import annotations
 

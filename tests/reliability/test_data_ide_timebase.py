@@ -21,6 +21,14 @@ from sdt_framework.signals.timebase import on_even_grid, require_one_record
 DATA = Path(__file__).parents[1] / "data" / "endaq"
 TICKS_PER_S = 32768  # SSX66115's time codes: 30.517578125 us each
 BLOCK = 30  # the 31st block of channel 32, from 3.74 s
+
+
+@pytest.fixture
+def sdt(sdt_in_process):
+    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
+    return sdt_in_process
+
+
 SAMPLES_PER_BLOCK = 390  # 2340 payload bytes, 3 axes of 2 bytes
 
 

@@ -2,8 +2,8 @@
 
 A speed of 0 would divide every order by zero, a negative one or NaN place
 every order line nowhere, text or inf are no speed at all; each is refused
-where it is read (the real ``sdt`` process: exit status and stderr as
-printed). Two rows of one recording that disagree on the speed are one
+where it is read (``sdt``'s entry point in this process: exit status and
+stderr as printed). Two rows of one recording that disagree on the speed are one
 recording at two speeds: it is left out with both lines named, never merged.
 A benchmark config's ``speeds`` that are not speeds are refused the same way.
 """
@@ -22,6 +22,12 @@ from sdt_framework.data import open_manifest
 from sdt_framework.errors import SDTError, SpecFileError
 
 HEADER = "path,sampling_rate_hz,condition,severity,recording_id,channel,speed_rpm\n"
+
+
+@pytest.fixture
+def sdt(sdt_in_process):
+    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
+    return sdt_in_process
 
 
 @pytest.fixture

@@ -24,8 +24,15 @@ import textwrap
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from ..helpers import EXPLORE_BENCHMARK
+
+
+@pytest.fixture
+def sdt(sdt_in_process):
+    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
+    return sdt_in_process
 
 
 def _sweep(folder: Path, sweep: str) -> Path:

@@ -16,6 +16,12 @@ from sdt_framework.severity import load_zone_file
 from ..severity.test_severity_tables import GOOD  # boundaries a_b 1.0, b_c 2.0, c_d 5.0
 
 
+@pytest.fixture
+def sdt(sdt_in_process):
+    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
+    return sdt_in_process
+
+
 def _table(a_b: object, b_c: object, band: str = "") -> str:
     """GOOD with these boundaries (and a band line), c_d an integer."""
     line = f"{band}boundaries = {{ a_b = {a_b}, b_c = {b_c}, c_d = 5 }}"

@@ -21,6 +21,12 @@ from sdt_framework.twin import Pair, Signal, check_twin
 SSX = Path(__file__).parents[1] / "data" / "endaq" / "SSX66115.IDE"
 
 
+@pytest.fixture
+def sdt(sdt_in_process):
+    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
+    return sdt_in_process
+
+
 def _strict(text: str) -> object:
     """``json.loads`` that refuses NaN and infinities (``allow_nan=False`` semantics)."""
 

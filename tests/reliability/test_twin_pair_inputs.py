@@ -23,6 +23,13 @@ FS_REF = 20_000.0
 RATE = 3134.0
 DATA = Path(__file__).parents[1] / "data" / "endaq"
 
+
+@pytest.fixture
+def sdt(sdt_in_process):
+    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
+    return sdt_in_process
+
+
 PAIR = """[reference]
 file = "ref.npy"
 axes = ["x"]
