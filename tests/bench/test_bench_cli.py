@@ -63,7 +63,7 @@ def run_sdt(*args: str) -> subprocess.CompletedProcess[str]:
     )
 
 
-def test_bad_configuration_is_one_line_before_any_work(tmp_path):
+def test_bad_configuration_is_one_line_before_any_work(sdt_in_process, tmp_path):
     for args, message in [
         (["--sensors", "adxl999"], "error: unknown sensor 'adxl999'"),
         (["--repeats", "-3"], "error: command line: field 'repeats': Input should be greater"),
@@ -73,7 +73,7 @@ def test_bad_configuration_is_one_line_before_any_work(tmp_path):
         ),
     ]:
         out = tmp_path / "never"
-        result = run_sdt(*args, "--out", str(out))
+        result = sdt_in_process("benchmark", *args, "--out", str(out))  # refused before any work
         assert result.returncode == 2, result.stderr
         assert "Traceback" not in result.stderr
         assert result.stderr.strip().startswith(message), result.stderr

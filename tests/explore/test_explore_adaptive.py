@@ -9,8 +9,6 @@ minimum-specification tables must agree cell by cell.
 
 from __future__ import annotations
 
-import subprocess
-import sys
 import textwrap
 
 import numpy as np
@@ -124,27 +122,14 @@ def build_registry_with(explore):
         ),
     ],
 )
-def test_adaptive_where_it_cannot_answer_is_one_line_before_any_work(tmp_path, sweep, message):
+def test_adaptive_where_it_cannot_answer_is_one_line_before_any_work(
+    sdt_in_process, tmp_path, sweep, message
+):
     path = tmp_path / "sweep.toml"
     path.write_text(textwrap.dedent(sweep) + '\n[benchmark]\nmachines = ["Motor-2"]\n')
     out = tmp_path / "out"
-    result = subprocess.run(
-        [
-            sys.executable,
-            "-m",
-            "sdt_framework",
-            "explore",
-            str(path),
-            "--strategy",
-            "adaptive",
-            "--quick",
-            "--out",
-            str(out),
-        ],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    args = ["explore", str(path), "--strategy", "adaptive", "--quick", "--out", str(out)]
+    result = sdt_in_process(*args)  # refused before any work: in this process
     assert result.returncode == 2, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error: --strategy adaptive"), lines

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
 import textwrap
 
 import numpy as np
@@ -127,16 +125,11 @@ def test_cli_example_prints_a_sweep_that_loads(tmp_path):
         ("[sweeps]\n", "unknown table"),
     ],
 )
-def test_cli_bad_sweeps_are_one_line_before_any_work(tmp_path, body, message):
+def test_cli_bad_sweeps_are_one_line_before_any_work(sdt_in_process, tmp_path, body, message):
     path = tmp_path / "sweep.toml"
     path.write_text(textwrap.dedent(body))
     out = tmp_path / "out"
-    result = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", "explore", str(path), "--out", str(out)],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    result = sdt_in_process("explore", str(path), "--out", str(out))  # refused before any work
     assert result.returncode == 2, result.stderr
     assert "Traceback" not in result.stderr
     lines = result.stderr.strip().splitlines()

@@ -23,8 +23,6 @@ from sdt_framework.explore.sweep import Target
 from sdt_framework.explore.zones import point_zone_agreement
 from sdt_framework.severity import assign_tables, builtin_tables
 
-from ..helpers import run_sdt
-
 CUTS = (1.4, 2.8, 4.5)  # ISO 10816-3 group 2 rigid, the default table of Motor-4
 #: reference V_RMS (mm/s) per window; x 1.5 moves the six between 0.94 and 4.5 one zone up
 VALUES = np.array([0.5, 1.0, 1.2, 2.0, 2.5, 3.5, 4.0, 6.0])
@@ -153,9 +151,9 @@ report = false
 {extra}"""
 
 
-def _refused(sweep: Path, out: Path) -> list[str]:
+def _refused(sdt, sweep: Path, out: Path) -> list[str]:
     """``sdt explore`` on a bad sweep: exit 2, one ``error:`` line (returned), no traceback."""
-    result = run_sdt("explore", str(sweep), "--out", str(out))
+    result = sdt("explore", str(sweep), "--out", str(out))
     assert result.returncode == 2, result.stderr
     lines = [line for line in result.stderr.splitlines() if line.strip()]
     assert len(lines) == 1 and lines[0].startswith("error: "), result.stderr
@@ -163,10 +161,12 @@ def _refused(sweep: Path, out: Path) -> list[str]:
 
 
 @pytest.mark.parametrize("value", ["0", "1.5", "-0.2", '"most"'])
-def test_a_bad_zone_agreement_is_one_line_naming_file_and_field(tmp_path, value) -> None:
+def test_a_bad_zone_agreement_is_one_line_naming_file_and_field(
+    sdt_in_process, tmp_path, value
+) -> None:
     path = tmp_path / "sweep.toml"
     path.write_text(SWEEP.format(zone=f"zone_agreement = {value}", extra=""))
-    lines = _refused(path, tmp_path / "o")
+    lines = _refused(sdt_in_process, path, tmp_path / "o")
     assert str(path) in lines[0] and "sweep.target.zone_agreement" in lines[0]
 
 
@@ -177,10 +177,12 @@ def test_a_bad_zone_agreement_is_one_line_naming_file_and_field(tmp_path, value)
         ('{ "Motor-2" = "iso-nope" }', "Motor-2: unknown zone table 'iso-nope'"),
     ],
 )
-def test_a_bad_zones_entry_in_the_config_is_one_line(tmp_path, zones, message) -> None:
+def test_a_bad_zones_entry_in_the_config_is_one_line(
+    sdt_in_process, tmp_path, zones, message
+) -> None:
     path = tmp_path / "sweep.toml"
     path.write_text(SWEEP.format(zone="zone_agreement = 0.9", extra=f"zones = {zones}\n"))
-    lines = _refused(path, tmp_path / "o")
+    lines = _refused(sdt_in_process, path, tmp_path / "o")
     assert f"{path}: [benchmark] zones: {message}" in lines[0]
 
 

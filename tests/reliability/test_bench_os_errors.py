@@ -156,10 +156,10 @@ def test_truncated_or_foreign_run_files_are_named_ignored_and_recomputed(
         ("foo", "missing port number in address 'foo'"),
     ],
 )
-def test_malformed_dask_scheduler_address(sdt, tmp_path, address, reason):
-    out = tmp_path / "o"
+def test_malformed_dask_scheduler_address(sdt_in_process, tmp_path, address, reason):
+    out = tmp_path / "o"  # refused before any work or connection: in this process
     line = one_error_line(
-        sdt(*SMALL_CLI, "--backend", "dask", "--scheduler", address, "--out", str(out))
+        sdt_in_process(*SMALL_CLI, "--backend", "dask", "--scheduler", address, "--out", str(out))
     )
     assert line == (
         f"error: --scheduler {address!r} is not a Dask scheduler address ({reason}); "

@@ -8,6 +8,8 @@ channel were accepted and the channel counted twice; an empty node name gave
 
 from __future__ import annotations
 
+import pytest
+
 NODE_CONFIG = """\
 [benchmark]
 dataset_options = {{triaxial = true}}
@@ -16,6 +18,12 @@ axes = {{ch6 = "x", ch2 = "y", ch3 = "z"}}
 sample = "node"
 nodes = {nodes}
 """
+
+
+@pytest.fixture
+def sdt(sdt_in_process):
+    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
+    return sdt_in_process
 
 
 def _error(result) -> str:

@@ -47,6 +47,12 @@ def lis3dh_folder(tmp_path_factory) -> Path:
     return out
 
 
+@pytest.fixture
+def sdt(sdt_in_process):
+    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
+    return sdt_in_process
+
+
 @pytest.mark.catalog
 def test_a_chain_that_stops_at_149_hz_is_named_and_warned_about(sdt, lis3dh_folder) -> None:
     done = sdt("compare", str(lis3dh_folder), env={"COLUMNS": "250"})
