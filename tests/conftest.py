@@ -12,8 +12,8 @@ columns, what a pipe gets, unless the test names another width for its own
 command (``CliRunner().invoke(..., env={"COLUMNS": ...})`` or a child's
 environment). rich reads ``COLUMNS`` once when a console is built and then keeps
 it, so the ``sdt`` consoles must be built with no ``COLUMNS`` set (they then read
-it at each print): ``pytest_configure`` removes it before any test module
-imports the command line, and a session fixture sets 80 for the tests.
+it at each print): ``pytest_configure`` removes it and then imports the command line,
+and a session fixture sets 80 for the tests.
 
 Following flake8's approach, a test that needs a third-party plugin writes a
 module and a ``*.dist-info`` folder with ``entry_points.txt`` into a temporary
@@ -49,6 +49,9 @@ def pytest_configure(config: pytest.Config) -> None:
     assert "sdt_framework.cli.common" not in sys.modules, "conftest must not import the CLI"
     os.environ.pop("COLUMNS", None)
     os.environ.pop("LINES", None)
+    # build sdt's consoles now, with no COLUMNS set, so that they follow it at each print;
+    # built later (a test file that imports the CLI only inside a test) they would keep 80
+    importlib.import_module("sdt_framework.cli.common")
     _one_blas_thread()
     config.addinivalue_line(
         "markers", "catalog: needs the separately installed sensor catalogue (sdt_sensors_catalog)"

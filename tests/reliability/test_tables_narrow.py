@@ -14,6 +14,12 @@ import pytest
 COLUMNS = ("DR", "SF/kHz", "max B", "fits", "uplinks", "ToA ms", "duty ok", "TX mJ", "TX J/day")
 
 
+@pytest.fixture
+def sdt(sdt_in_process):
+    """``sdt budget`` starts no worker: run in this process (tests/conftest.py)."""
+    return sdt_in_process
+
+
 def _budget(sdt, *args: str):
     narrow = {"COLUMNS": "80"}  # what a pipe or a file gets
     table = sdt("budget", *args, env=narrow)
