@@ -214,7 +214,9 @@ def open_executor(
         LocalCluster(
             n_workers=jobs,
             threads_per_worker=1,
-            dashboard_address=None,
+            # a free port: None still binds 8787 for the scheduler's HTTP routes, and a second
+            # local cluster (two benchmarks at once) printed "UserWarning: Port 8787 is in use"
+            dashboard_address=":0",
             silence_logs=logging.ERROR,  # shutting down after Ctrl-C is not worth a warning
         ) as cluster,
         Client(cluster) as client,

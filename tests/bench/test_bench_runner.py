@@ -99,7 +99,7 @@ def test_dask_cluster_gives_the_local_results(small_config, registry, tmp_path):
     }
 
     with LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
     ) as cluster:
         # rf depends on the order of the training rows: results must not depend
         # on which worker finished first.

@@ -84,7 +84,7 @@ def test_dask_starts_tasks_in_the_order_given():
     from distributed import Client, LocalCluster
 
     with (
-        LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None)
+        LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0")
         as cluster,
         Client(cluster) as client,
     ):  # fmt: skip

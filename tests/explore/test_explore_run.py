@@ -79,7 +79,7 @@ def test_explore_on_a_local_dask_cluster_equals_the_local_run(tmp_path):
     from distributed import LocalCluster
 
     with LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
     ) as cluster:
         _, _, on_dask, _ = run_explore(
             tmp_path,

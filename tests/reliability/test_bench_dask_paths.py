@@ -25,7 +25,7 @@ def test_a_worker_started_in_another_folder_opens_the_data(tmp_path, sdt_main, m
     six_recordings(data, "manifest.csv")
     with (
         LocalCluster(n_workers=0, processes=False, protocol="tcp", host="127.0.0.1",
-                     dashboard_address=None) as cluster,
+                     dashboard_address=":0") as cluster,
         Client(cluster) as client,
     ):  # fmt: skip
         worker = subprocess.Popen(

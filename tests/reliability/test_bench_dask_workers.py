@@ -69,7 +69,7 @@ def _cluster_with_odd_worker(prefix: list[str], env: dict[str, str]):
         processes=False,
         protocol="tcp",  # not inproc: the odd worker is another process
         host="127.0.0.1",
-        dashboard_address=None,
+        dashboard_address=":0",
     )
     client = Client(cluster)
     odd = _worker(cluster.scheduler_address, prefix, env)
@@ -146,7 +146,7 @@ def test_cache_no_worker_can_write_and_a_cluster_without_workers(read_only_dir):
 
     cache = read_only_dir / "cache"
     with (
-        LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None)
+        LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0")
         as cluster,
         Client(cluster) as client,
     ):  # fmt: skip

@@ -87,7 +87,7 @@ def test_jobs_1_jobs_2_and_dask_give_identical_results_for_every_classifier(
     one = run("jobs1", jobs=1)
     two = run("jobs2", jobs=2)
     with LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
     ) as cluster:
         dask = run("dask", jobs=2, backend="dask", scheduler=cluster.scheduler_address)
     results = one[0]

@@ -49,7 +49,7 @@ def test_readme_units_at_85c_with_default_jobs_and_on_dask_equal_jobs_1(sdt, tmp
     default = _run(sdt, tmp_path, "default", *args)
     single = _run(sdt, tmp_path, "jobs1", *args, "--jobs", "1")
     with LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
     ) as cluster:
         on_dask = ("--backend", "dask", "--scheduler", cluster.scheduler_address)
         dask = _run(sdt, tmp_path, "dask", *args, *on_dask)
