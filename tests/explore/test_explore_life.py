@@ -22,8 +22,6 @@ from sdt_framework.explore.minspec import meeting_points
 from sdt_framework.explore.objectives import verdicts
 from sdt_framework.explore.target import Target
 
-from ..helpers import run_sdt
-
 RATES = [800.0, 1600.0, 3200.0, 6400.0]
 FIELDS = ["sampling_rate_hz"]
 DEMAND = {"sampling_rate_hz": "higher"}
@@ -170,10 +168,12 @@ machines = ["Motor-2"]
         ("min_battery_life_years = 16", "min_battery_life_years"),  # 2xAA: 15 years
     ],
 )
-def test_a_bad_life_value_is_one_line_naming_file_and_field(tmp_path, line, field) -> None:
+def test_a_bad_life_value_is_one_line_naming_file_and_field(
+    sdt_in_process, tmp_path, line, field
+) -> None:
     path = tmp_path / "sweep.toml"
     path.write_text(SWEEP.format(line=line))
-    result = run_sdt("explore", str(path), "--out", str(tmp_path / "o"))
+    result = sdt_in_process("explore", str(path), "--out", str(tmp_path / "o"))  # refused
     assert result.returncode == 2, result.stderr
     lines = [x for x in result.stderr.splitlines() if x.strip()]
     assert len(lines) == 1 and lines[0].startswith("error: "), result.stderr
@@ -186,7 +186,7 @@ def test_a_bad_life_value_is_one_line_naming_file_and_field(tmp_path, line, fiel
     [("2s", "breaks the EU868 duty cycle"), ("0.5s", "shorter than one acquisition")],
 )
 def test_a_report_interval_the_node_cannot_keep_is_refused_when_the_sweep_is_read(
-    tmp_path, interval, why
+    sdt_in_process, tmp_path, interval, why
 ) -> None:
     """Before: the whole sweep ran, then blamed 'no supply current' and suggested --interval."""
     path = tmp_path / "sweep.toml"
@@ -194,7 +194,8 @@ def test_a_report_interval_the_node_cannot_keep_is_refused_when_the_sweep_is_rea
         SWEEP.format(line=f'min_battery_life_years = 5.0\nreport_interval = "{interval}"')
     )
     out = tmp_path / "o"
-    result = run_sdt("explore", str(path), "--quick", "--strategy", "exhaustive", "--out", str(out))
+    args = ["explore", str(path), "--quick", "--strategy", "exhaustive", "--out", str(out)]
+    result = sdt_in_process(*args)  # refused when the sweep is read: in this process
     assert result.returncode == 2, result.stderr
     lines = [x for x in result.stderr.splitlines() if x.strip()]
     assert len(lines) == 1, result.stderr
@@ -203,7 +204,7 @@ def test_a_report_interval_the_node_cannot_keep_is_refused_when_the_sweep_is_rea
     assert "--interval" not in lines[0] and not (out / "results.parquet").exists()
 
 
-def test_battery_or_interval_without_a_life_threshold_is_said(tmp_path) -> None:
+def test_battery_or_interval_without_a_life_threshold_is_said(sdt_in_process, tmp_path) -> None:
     target = Target(max_loss=0.05, battery="D")
     (note,) = target.life_notes()
     assert note.startswith("sweep.target.battery = 'D' without min_battery_life_years")
@@ -213,7 +214,7 @@ def test_battery_or_interval_without_a_life_threshold_is_said(tmp_path) -> None:
     # the command says it on reading the file (this sweep then stops on benchmark.sensors)
     path = tmp_path / "sweep.toml"
     path.write_text(SWEEP.format(line='battery = "D"') + 'sensors = ["adxl345"]\n')
-    result = run_sdt("explore", str(path), "--out", str(tmp_path / "o"))
+    result = sdt_in_process("explore", str(path), "--out", str(tmp_path / "o"))
     assert result.returncode == 2
     assert f"note: {path}: sweep.target.battery = 'D' without min_battery_life_years" in (
         result.stderr
