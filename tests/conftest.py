@@ -56,6 +56,9 @@ def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line(
         "markers", "catalog: needs the separately installed sensor catalogue (sdt_sensors_catalog)"
     )
+    config.addinivalue_line(
+        "markers", "in_process: the reliability tests' sdt runs in this process (sdt_in_process)"
+    )
 
 
 def _one_blas_thread() -> None:

@@ -70,8 +70,14 @@ def read_only_dir(tmp_path) -> Path:
 
 
 @pytest.fixture
-def sdt(tmp_path):
-    """``sdt(*args, env=...)``: run the real command; the cache goes to the test's folder."""
+def sdt(request, tmp_path):
+    """``sdt(*args, env=...)``: run the real command; the cache goes to the test's folder.
+
+    In a module marked ``in_process`` (its commands end before any worker starts) the same
+    call runs through the entry point in this process instead (``sdt_in_process``).
+    """
+    if request.node.get_closest_marker("in_process"):
+        return request.getfixturevalue("sdt_in_process")
 
     def run(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
         return run_sdt(*args, env={"SDT_CACHE_DIR": str(tmp_path / "cache"), **(env or {})})

@@ -22,10 +22,8 @@ DATA = Path(__file__).parents[1] / "data" / "endaq"
 SIZE = 658_680  # bytes of SSX66115.IDE
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 def _damaged(folder: Path, how: str) -> Path:

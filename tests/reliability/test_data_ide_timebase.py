@@ -23,10 +23,8 @@ TICKS_PER_S = 32768  # SSX66115's time codes: 30.517578125 us each
 BLOCK = 30  # the 31st block of channel 32, from 3.74 s
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 SAMPLES_PER_BLOCK = 390  # 2340 payload bytes, 3 axes of 2 bytes

@@ -24,10 +24,8 @@ from sdt_framework.errors import SDTError, SpecFileError
 HEADER = "path,sampling_rate_hz,condition,severity,recording_id,channel,speed_rpm\n"
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 @pytest.fixture

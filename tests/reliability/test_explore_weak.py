@@ -28,11 +28,8 @@ import pytest
 
 from ..helpers import EXPLORE_BENCHMARK
 
-
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 def _sweep(folder: Path, sweep: str) -> Path:

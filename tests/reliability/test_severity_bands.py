@@ -47,10 +47,8 @@ def lis3dh_folder(tmp_path_factory) -> Path:
     return out
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 @pytest.mark.catalog

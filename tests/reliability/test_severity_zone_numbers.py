@@ -15,11 +15,8 @@ from sdt_framework.severity import load_zone_file
 
 from ..severity.test_severity_tables import GOOD  # boundaries a_b 1.0, b_c 2.0, c_d 5.0
 
-
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 def _table(a_b: object, b_c: object, band: str = "") -> str:

@@ -14,10 +14,8 @@ import pytest
 COLUMNS = ("DR", "SF/kHz", "max B", "fits", "uplinks", "ToA ms", "duty ok", "TX mJ", "TX J/day")
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """``sdt budget`` starts no worker: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 def _budget(sdt, *args: str):

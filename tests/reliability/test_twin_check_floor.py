@@ -26,10 +26,8 @@ N_DEV = 290e-6  # device noise, g/sqrt(Hz) (the ADXL345's datasheet density)
 S_MOTION = (2e-3) ** 2  # motion PSD, g^2/Hz, 10-2500 Hz
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 FULL_SCALE = 16.0  # adxl345

@@ -21,10 +21,8 @@ from sdt_framework.twin import Pair, Signal, check_twin
 SSX = Path(__file__).parents[1] / "data" / "endaq" / "SSX66115.IDE"
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 def _strict(text: str) -> object:

@@ -23,10 +23,8 @@ from scipy import signal
 FILE = Path(__file__).parents[1] / "data" / "endaq" / "Cloud_Test_000000.IDE"
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 def _raw(channel: int) -> tuple[np.ndarray, np.ndarray]:

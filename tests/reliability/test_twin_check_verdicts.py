@@ -25,10 +25,8 @@ import pytest
 DATA = Path(__file__).parents[1] / "data" / "endaq"
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 def _raw(name: str, channel: int) -> tuple[np.ndarray, np.ndarray]:

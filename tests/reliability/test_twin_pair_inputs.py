@@ -24,10 +24,8 @@ RATE = 3134.0
 DATA = Path(__file__).parents[1] / "data" / "endaq"
 
 
-@pytest.fixture
-def sdt(sdt_in_process):
-    """These commands end before any worker starts: run in this process (tests/conftest.py)."""
-    return sdt_in_process
+#: these commands end before any worker starts: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 
 PAIR = """[reference]
