@@ -112,8 +112,8 @@ def _row(
         )
         for size in (cap, app_bytes - cap * (k - 1))
     )  # fmt: skip
-    times = [full, last] if k > 1 else [last]
     t_report = (k - 1) * full + last
+    longest = max(full, last) if k > 1 else last
     per_day = SECONDS_PER_DAY / interval_s
     airtime_day = t_report * per_day
     min_interval = None if region.duty_cycle is None else t_report / region.duty_cycle
@@ -125,8 +125,8 @@ def _row(
         fits=k == 1,
         messages_per_report=k,
         time_on_air_s=t_report,
-        longest_message_s=max(times),
-        dwell_ok=None if rate.dwell_time_s is None else max(times) <= rate.dwell_time_s,
+        longest_message_s=longest,
+        dwell_ok=None if rate.dwell_time_s is None else longest <= rate.dwell_time_s,
         messages_per_day=k * per_day,
         airtime_per_day_s=airtime_day,
         transmit_fraction=airtime_day / SECONDS_PER_DAY,
