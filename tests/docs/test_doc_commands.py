@@ -19,6 +19,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
 from tools.doccheck.extract import Command, all_steps
 from tools.doccheck.runner import Result, run_doc
+from tools.doccheck.warm import WarmStart
 
 STEPS = all_steps()
 FAST = [
@@ -37,8 +38,11 @@ def verdicts(request, tmp_path_factory) -> dict[str, Future]:
     run side by side; each test waits for its own document's verdicts. Under
     pytest-xdist (``make test``: one worker per core) the other workers keep
     the other cores busy, so this worker runs its documents one at a time.
+    Their ``sdt`` commands start warm, as ``python -m tools.doccheck`` runs them
+    (``tools/doccheck/warm.py``).
     """
     cache = tmp_path_factory.mktemp("doccheck-cache")
+    warm = WarmStart().__enter__()
     # other tests name a parameter "command" too (a string there): keep this file's only
     params = [getattr(item, "callspec", None) for item in request.session.items]
     docs = {
@@ -48,10 +52,11 @@ def verdicts(request, tmp_path_factory) -> dict[str, Future]:
     }
     workers = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
     pool = ThreadPoolExecutor(max_workers=max(1, 2 // workers))
-    request.addfinalizer(pool.shutdown)
+    request.addfinalizer(lambda: warm.__exit__(None, None, None))
+    request.addfinalizer(pool.shutdown)  # finalizers run last first: the pool ends, then warm
 
     def run(doc: str) -> dict[str, Result]:
-        return {r.command.id: r for r in run_doc(STEPS[doc], "fast", cache)}
+        return {r.command.id: r for r in run_doc(STEPS[doc], "fast", cache, warm=warm)}
 
     return {doc: pool.submit(run, doc) for doc in sorted(docs)}
 

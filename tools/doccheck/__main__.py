@@ -10,6 +10,7 @@ blocks first; a document's own commands always run in order.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import os
 import queue
 import signal
@@ -23,6 +24,7 @@ from pathlib import Path
 from .extract import ROOT, Command, all_steps
 from .runner import Result, run_doc
 from .sandbox import stop_all
+from .warm import WarmStart
 
 LABEL = {"passed": "PASS", "failed": "FAIL", "skipped": "SKIP", "xfailed": "XFAIL"}
 
@@ -39,6 +41,9 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--mode", choices=["fast", "slow", "all"], default="slow")
     parser.add_argument("--dump", type=Path, help="write each command's printed output here")
     parser.add_argument("--jobs", type=int, default=2, help="documents run side by side")
+    parser.add_argument(
+        "--cold", action="store_true", help="every sdt in a fresh process (default: warm start)"
+    )
     parser.add_argument("docs", nargs="*", help="README.md, docs/x.md (default: all)")
     args = parser.parse_args(argv)
     if args.jobs < 1:
@@ -47,14 +52,16 @@ def main(argv: list[str] | None = None) -> int:
     # so a test calling main() leaves its process as it found it.
     before = signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))
     try:
-        with tempfile.TemporaryDirectory(prefix="doccheck-cache-") as folder:
+        with contextlib.ExitStack() as stack:
+            folder = stack.enter_context(tempfile.TemporaryDirectory(prefix="doccheck-cache-"))
             cache = Path(os.environ.get("SDT_CACHE_DIR") or folder)  # one cache for all documents
-            return check(args, cache)
+            warm = None if args.cold else stack.enter_context(WarmStart())
+            return check(args, cache, warm)
     finally:
         signal.signal(signal.SIGTERM, before)
 
 
-def check(args: argparse.Namespace, cache: Path) -> int:
+def check(args: argparse.Namespace, cache: Path, warm: WarmStart | None = None) -> int:
     """Run the selected documents in ``args`` with the shared ``cache``; 1 if one failed."""
     found = all_steps()
     unknown = [d for d in args.docs if d not in found]
@@ -66,7 +73,7 @@ def check(args: argparse.Namespace, cache: Path) -> int:
     counts: Counter[str] = Counter()
     skipped: list[str] = []
     start, cpu = time.monotonic(), 0.0
-    for result in _run_side_by_side(selected, args.mode, cache, args.jobs):
+    for result in _run_side_by_side(selected, args.mode, cache, args.jobs, warm):
         counts[result.status] += 1
         if args.dump and result.status != "skipped":
             dump(args.dump, result.command, result.printed)
@@ -88,7 +95,9 @@ def check(args: argparse.Namespace, cache: Path) -> int:
     return 1 if counts["failed"] else 0
 
 
-def _run_side_by_side(selected: dict, mode: str, cache: Path, jobs: int):
+def _run_side_by_side(
+    selected: dict, mode: str, cache: Path, jobs: int, warm: WarmStart | None = None
+):
     """Yield every document's results as they come, ``jobs`` documents at a time.
 
     The documents with the most slow blocks start first, so the longest one
@@ -98,7 +107,7 @@ def _run_side_by_side(selected: dict, mode: str, cache: Path, jobs: int):
 
     def run(steps: list) -> None:
         try:
-            for result in run_doc(steps, mode, cache, ROOT):
+            for result in run_doc(steps, mode, cache, ROOT, warm):
                 done.put(result)
         finally:
             done.put(None)  # this document is over

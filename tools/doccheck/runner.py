@@ -17,6 +17,7 @@ from pathlib import Path
 from .compare import expectation, problems
 from .extract import ROOT, Command, FileStep
 from .sandbox import Sandbox
+from .warm import WarmStart
 
 BOX = re.compile(r"[\u2500-\u257f]")
 FAST_TIMEOUT_S = 300.0
@@ -75,12 +76,19 @@ def _indent(text: str, limit: int = 60) -> str:
     return "\n".join(f"    | {line}" for line in cut)
 
 
-def run_doc(steps: list[Command | FileStep], mode: str, cache: Path, root: Path = ROOT):
-    """Yield a Result per command of one document (``mode`` fast, slow or all), in order."""
+def run_doc(
+    steps: list[Command | FileStep],
+    mode: str,
+    cache: Path,
+    root: Path = ROOT,
+    warm: WarmStart | None = None,
+):
+    """Yield a Result per command of one document (``mode`` fast, slow or all), in order;
+    its ``sdt`` commands start from ``warm``'s server when one is given (:mod:`.warm`)."""
     if mode == "slow" and not has_slow(steps):
         return
     with tempfile.TemporaryDirectory(prefix="doccheck-") as folder:
-        sandbox = Sandbox(Path(folder), root, cache)
+        sandbox = Sandbox(Path(folder), root, cache, warm)
         for step in steps:
             if "link" in step.notes:
                 sandbox.link(step.notes["link"])

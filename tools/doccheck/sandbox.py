@@ -14,9 +14,12 @@ import re
 import signal
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 from pathlib import Path
+
+from .warm import WarmStart
 
 TMP = re.compile(r"(?<![\w.~/])/tmp/")
 KEEP_OUT = {".git", "results", "build"}
@@ -28,8 +31,8 @@ _STOPPED = threading.Event()
 class Sandbox:
     """One document's working folder; commands run in it one after another."""
 
-    def __init__(self, root: Path, repo: Path, cache: Path) -> None:
-        self.root, self.repo, self.cache = root, repo, cache
+    def __init__(self, root: Path, repo: Path, cache: Path, warm: WarmStart | None = None) -> None:
+        self.root, self.repo, self.cache, self.warm = root, repo, cache, warm
         (root / "home").mkdir(parents=True, exist_ok=True)
         (root / "tmp").mkdir(exist_ok=True)
         for entry in repo.iterdir():
@@ -56,7 +59,7 @@ class Sandbox:
         env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env.get('PATH', '')}"
         env.update(HOME=str(self.root / "home"), SDT_CACHE_DIR=str(self.cache))
         env.update(COLUMNS=str(columns), NO_COLOR="1", TERM="dumb")
-        return env
+        return self.warm.environment(env) if self.warm else env
 
     def run(self, command: str, columns: int, timeout: float) -> tuple[int, str, float, float]:
         """Exit status, what the terminal shows (stdout and stderr), wall and CPU seconds.
@@ -70,6 +73,11 @@ class Sandbox:
         a crash before the pipe still shows as a traceback or missing lines.
         """
         command = TMP.sub(f"{self.root}/tmp/", command)
+        env = self.environment(columns)
+        # a warm command's CPU is its server's child's, not this shell's: its client writes it here
+        handle, cpu_file = tempfile.mkstemp(prefix="doccheck-cpu-")
+        os.close(handle)
+        env["SDT_WARM_CPU_FILE"] = cpu_file
         start = time.monotonic()
         with _LOCK:
             if _STOPPED.is_set():
@@ -77,7 +85,7 @@ class Sandbox:
             process = subprocess.Popen(
                 ["bash", "-c", command],
                 cwd=self.root,
-                env=self.environment(columns),
+                env=env,
                 stdout=subprocess.PIPE,
                 stderr=subprocess.STDOUT,
                 start_new_session=True,
@@ -94,6 +102,8 @@ class Sandbox:
             process.returncode = status = os.waitstatus_to_exitcode(code)
         finally:  # the checker stopped (Ctrl-C, SIGTERM): stop the command it started
             timer.cancel()
+            warm_cpu = sum(map(float, Path(cpu_file).read_text().split()))
+            os.unlink(cpu_file)
             if process.returncode is None:
                 _stop(process.pid, expired)
             with _LOCK:
@@ -102,7 +112,7 @@ class Sandbox:
             status, raw = -1, raw + f"\n(stopped after {timeout:.0f} s)".encode()
         printed = raw.decode("utf-8", "replace")
         printed = printed.replace(f"{self.root}/tmp/", "/tmp/").replace(f"{self.root}/", "")
-        return status, printed, time.monotonic() - start, usage.ru_utime + usage.ru_stime
+        return status, printed, time.monotonic() - start, usage.ru_utime + usage.ru_stime + warm_cpu
 
 
 def _stop(pid: int, expired: threading.Event) -> None:
