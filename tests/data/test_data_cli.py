@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 from sdt_plugins.datasets.nln_emp import open_nln_emp
 from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
@@ -33,17 +32,13 @@ CLASSES = {
 }
 
 
-def sdt(*args: str, env_cache: Path) -> subprocess.CompletedProcess:
-    code = "from sdt_framework.cli.main import main; main()"
-    return subprocess.run(
-        [sys.executable, "-c", code, *args],
-        capture_output=True,
-        text=True,
-        env={"SDT_CACHE_DIR": str(env_cache), "PATH": "/usr/bin:/bin"},
-    )
+@pytest.fixture
+def sdt(sdt_in_process):
+    """``sdt(*args, env_cache=...)``: the command in this process (``dataset`` starts no worker)."""
+    return lambda *args, env_cache: sdt_in_process(*args, env={"SDT_CACHE_DIR": str(env_cache)})
 
 
-def test_synth_then_inspect_round_trip(tmp_path: Path) -> None:
+def test_synth_then_inspect_round_trip(sdt, tmp_path: Path) -> None:
     out = tmp_path / "syn"
     done = sdt(
         "dataset",
@@ -80,13 +75,13 @@ def test_synth_then_inspect_round_trip(tmp_path: Path) -> None:
     np.testing.assert_allclose(rec.load(), ref.load(), rtol=1e-5, atol=1e-9)
 
 
-def test_inspect_bad_path_is_one_line_error(tmp_path: Path) -> None:
+def test_inspect_bad_path_is_one_line_error(sdt, tmp_path: Path) -> None:
     done = sdt("dataset", "inspect", str(tmp_path / "nothing.txt"), env_cache=tmp_path)
     assert done.returncode == 2 and "Traceback" not in done.stderr
     assert "neither a registered dataset" in done.stderr
 
 
-def test_list_shows_builtin_datasets(tmp_path: Path) -> None:
+def test_list_shows_builtin_datasets(sdt, tmp_path: Path) -> None:
     done = sdt("dataset", "list", "--json", env_cache=tmp_path)
     names = {d["name"]: d["requires_path"] for d in json.loads(done.stdout)}
     assert {"synthetic-pump": False, "nln-emp": True, "manifest": True}.items() <= names.items()

@@ -9,8 +9,6 @@ user gives (``speeds`` in ``dataset_options``, ``sdt dataset synth --speeds``).
 from __future__ import annotations
 
 import math
-import subprocess
-import sys
 
 import numpy as np
 import pytest
@@ -162,15 +160,13 @@ def test_the_same_option_selects_the_speeds_in_a_benchmark_config(tmp_path) -> N
     }
 
 
-def sdt(*args: str, cache) -> subprocess.CompletedProcess:
-    code = "from sdt_framework.cli.main import main; main()"
-    env = {"SDT_CACHE_DIR": str(cache), "PATH": "/usr/bin:/bin"}
-    return subprocess.run(
-        [sys.executable, "-c", code, *args], capture_output=True, text=True, env=env
-    )
+@pytest.fixture
+def sdt(sdt_in_process):
+    """``sdt(*args, cache=...)``: the command in this process (``dataset`` starts no worker)."""
+    return lambda *args, cache: sdt_in_process(*args, env={"SDT_CACHE_DIR": str(cache)})
 
 
-def test_synth_speeds_writes_each_speed_in_its_folder_of_the_archive_layout(tmp_path) -> None:
+def test_synth_speeds_writes_each_speed_in_its_folder_of_the_archive_layout(sdt, tmp_path) -> None:
     out = tmp_path / "speeds"
     args = ("dataset", "synth", "--out", str(out), "--duration", "0.5", "--seed", "1")
     done = sdt(*args, "--speeds", "50,75,100", cache=tmp_path / "cache")
@@ -195,7 +191,7 @@ def test_synth_speeds_writes_each_speed_in_its_folder_of_the_archive_layout(tmp_
         np.testing.assert_allclose(found[rid].load(), ref[rid].load(), rtol=1e-5, atol=1e-9)
 
 
-def test_synth_speeds_a_speed_not_generated_is_one_line_and_nothing_written(tmp_path) -> None:
+def test_synth_speeds_a_speed_not_generated_is_one_line_and_nothing_written(sdt, tmp_path) -> None:
     out = tmp_path / "none"
     done = sdt("dataset", "synth", "--out", str(out), "--speeds", "60", cache=tmp_path / "c")
     assert done.returncode == 2

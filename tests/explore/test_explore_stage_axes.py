@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -278,26 +276,21 @@ def test_stage_costs_count_halvings_or_the_span_of_the_magnitude():
     assert point_costs(values, {"gauss-markov.sigma_ug": 200.0}, log, 0.0).tolist() == [1.0, -1.0]
 
 
-def run_cli(tmp_path, body: str):
+def run_cli(sdt_in_process, tmp_path, body: str):
+    """``sdt explore`` of ``body``, in this process (refused, or ``jobs = 1``: no worker)."""
     path = tmp_path / "sweep.toml"
     path.write_text(body)
     out = tmp_path / "out"
-    result = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", "explore", str(path), "--out", str(out)],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
-    return result, out
+    return sdt_in_process("explore", str(path), "--out", str(out)), out
 
 
-def test_cross_axis_without_triaxial_nodes_is_refused_before_any_work(tmp_path):
+def test_cross_axis_without_triaxial_nodes_is_refused_before_any_work(sdt_in_process, tmp_path):
     body = (
         '[sweep]\nbase = "adxl345"\n[sweep.axes]\n"cross-axis.pct" = { levels = [0, 2] }\n'
         '[benchmark]\nmachines = ["Motor-2"]\nchannels = ["ch1"]\nclassifiers = ["lr"]\n'
         "repeats = 1\n"
     )
-    result, out = run_cli(tmp_path, body)
+    result, out = run_cli(sdt_in_process, tmp_path, body)
     assert result.returncode == 2, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("error:"), lines
@@ -305,7 +298,7 @@ def test_cross_axis_without_triaxial_nodes_is_refused_before_any_work(tmp_path):
     assert not out.exists()
 
 
-def test_explore_end_to_end_names_the_stage_parameter_in_min_spec(tmp_path):
+def test_explore_end_to_end_names_the_stage_parameter_in_min_spec(sdt_in_process, tmp_path):
     body = (
         '[sweep]\nbase = "adxl345"\n[sweep.axes]\n'
         '"nonlinearity.second_pct_fs" = { levels = [0, 5] }\n'
@@ -314,7 +307,7 @@ def test_explore_end_to_end_names_the_stage_parameter_in_min_spec(tmp_path):
         f'scenarios = ["forward"]\nrepeats = 1\njobs = 1\ncache_dir = "{tmp_path / "cache"}"\n'
         "dataset_options = { duration = 1.5 }\n"
     )
-    result, out = run_cli(tmp_path, body)
+    result, out = run_cli(sdt_in_process, tmp_path, body)
     assert result.returncode == 0, result.stderr
     spec = pd.read_csv(out / "min_spec.csv")
     assert set(spec["parameter"]) == {"nonlinearity.second_pct_fs"}

@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import re
 import shlex
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -95,22 +93,16 @@ def test_help_cites_no_spec_section_and_loses_no_bracketed_word(name):
         assert not re.search(r"(?<!\\)\[[a-z]", text), (name, param.name, text)
 
 
-def test_errors_and_sources_cite_no_spec_section(tmp_path):
+def test_errors_and_sources_cite_no_spec_section(tmp_path, sdt_in_process, monkeypatch):
     np.save(tmp_path / "x.npy", np.zeros(300))
+    monkeypatch.chdir(tmp_path)  # the commands run in this process, from tmp_path
     runs = [
         ["features", "extract", "x.npy", "--fs", "15", "--out", "f.parquet"],
         ["sensors", "show", "native-reference"],
         ["sensors", "show", "adxl1002"],
     ]
     for index, args in enumerate(runs):
-        run = subprocess.run(
-            [sys.executable, "-m", "sdt_framework", *args],
-            capture_output=True,
-            text=True,
-            cwd=tmp_path,
-            env={"COLUMNS": "200", "PATH": "/usr/bin:/bin"},
-            check=False,
-        )
+        run = sdt_in_process(*args, env={"COLUMNS": "200"})
         assert "SPEC section" not in run.stdout + run.stderr, args
         assert "Traceback" not in run.stderr, run.stderr
         if index == 0:  # the empty-band error points at a document that ships

@@ -5,6 +5,9 @@ On main only a benchmark estimated at over an hour printed its estimate, and
 did not say what it assumed. Now every benchmark prints one ``note:`` line
 with its runs, featurised signals and estimated time on N processes, and the
 assumption behind the time, before any work.
+
+The note, not the processes, is the subject: ``sdt`` runs in this process (``in_process``)
+with ``--jobs 1``, so no worker starts.
 """
 
 from __future__ import annotations
@@ -12,13 +15,17 @@ from __future__ import annotations
 import re
 
 import pandas as pd
+import pytest
+
+pytestmark = pytest.mark.in_process
 
 ARGS = ("--quick", "--machines", "Motor-2", "--channels", "ch1", "--sensors", "adxl345")
+ONE = ("--jobs", "1")  # this process only: no worker starts
 
 
 def test_the_estimate_and_its_assumption_are_printed_before_the_run(sdt, tmp_path):
     out = tmp_path / "a"
-    done = sdt("benchmark", *ARGS, "--classifiers", "lr", "--no-report", "--out", str(out))
+    done = sdt("benchmark", *ARGS, *ONE, "--classifiers", "lr", "--no-report", "--out", str(out))
     assert done.returncode == 0, done.stderr
     notes = [line for line in done.stderr.splitlines() if line.startswith("note: ")]
     assert len(notes) == 1, done.stderr

@@ -7,6 +7,10 @@ raises :class:`~sdt_framework.errors.InternalError`. Before, such an
 exception was either Python's bare traceback (exit 1) or, for sdt's own
 "no registry bound" check, a one-line ``error:`` with exit 2, the same as a
 typo in a sensor name.
+
+The commands run in this process (``in_process``; ``fake_dist`` puts the site on
+``sys.path`` here as well): the plugin's replacement of ``_profile_row`` is undone
+after each test, so no later command in this process meets it.
 """
 
 from __future__ import annotations
@@ -15,7 +19,10 @@ import os
 
 import pytest
 
+import sdt_framework.cli.sensors as listing
 from sdt_framework.errors import INTERNAL_EXIT
+
+pytestmark = pytest.mark.in_process
 
 PLUGIN = """
 import sdt_framework.cli.sensors as listing
@@ -36,6 +43,12 @@ listing._profile_row = {kind}
 def register_sensors(register):
     pass
 """
+
+
+@pytest.fixture(autouse=True)
+def _profile_row_restored(monkeypatch):
+    """The plugin replaces ``listing._profile_row`` when imported: put back after the test."""
+    monkeypatch.setattr(listing, "_profile_row", listing._profile_row)
 
 
 def _run(sdt, fake_dist, kind: str, **env: str):

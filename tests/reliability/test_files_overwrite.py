@@ -6,6 +6,8 @@ existing file, while ``sdt twin fit --out`` refused one with no way to allow
 it. Now all five refuse an existing file in one line naming it, before any
 work; ``--overwrite`` (the flag ``sdt dataset synth`` already had) allows it;
 and an input file is never an output, ``--overwrite`` or not.
+
+No command here starts a worker: ``sdt`` runs in this process (``in_process``).
 """
 
 from __future__ import annotations
@@ -17,6 +19,8 @@ import pytest
 
 DATA = Path(__file__).parents[1] / "data" / "endaq"
 OLD = b"an earlier result the user wants to keep"
+
+pytestmark = pytest.mark.in_process
 
 
 def _signal(folder: Path) -> Path:

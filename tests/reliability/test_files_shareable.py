@@ -5,6 +5,10 @@ carried the data's absolute path and the platform string (kernel, libc). Now
 paths are written relative to the results folder, machine details sit only in
 ``summary.json["machine"]``, and the folder still resumes: from another working
 directory, and after the folder and its data are moved together.
+
+The commands run in this process (``sdt_in_process``, ``--jobs 1``: no worker starts; the
+results are the same at any ``--jobs``), each from its working directory (``chdir``): the
+paths are the subject, not the process.
 """
 
 from __future__ import annotations
@@ -12,10 +16,11 @@ from __future__ import annotations
 import json
 import platform
 import shutil
-import subprocess
 from pathlib import Path
 
-from ..helpers import run_sdt, six_recordings
+import pytest
+
+from ..helpers import six_recordings
 
 SHAREABLE = ("config.toml", "report.md", "report.html", "summary.json")
 
@@ -26,10 +31,17 @@ def _manifest(folder: Path) -> Path:
     return six_recordings(folder, "manifest.csv")
 
 
-def _sdt(*args: str, cwd: Path, cache: Path) -> subprocess.CompletedProcess[str]:
-    done = run_sdt(*args, cwd=cwd, env={"SDT_CACHE_DIR": str(cache)})
-    assert done.returncode == 0, done.stderr
-    return done
+@pytest.fixture
+def sdt_from(sdt_in_process, monkeypatch):
+    """``sdt_from(*args, cwd=..., cache=...)``: ``sdt ARGS --jobs 1`` run from ``cwd``, here."""
+
+    def run(*args: str, cwd: Path | str, cache: Path):
+        monkeypatch.chdir(cwd)
+        done = sdt_in_process(*args, "--jobs", "1", env={"SDT_CACHE_DIR": str(cache)})
+        assert done.returncode == 0, done.stderr
+        return done
+
+    return run
 
 
 def _leaks(folder: Path, secret: str) -> list[str]:
@@ -45,30 +57,30 @@ def _leaks(folder: Path, secret: str) -> list[str]:
     return found
 
 
-def test_a_results_folder_names_no_absolute_path_and_resumes_when_moved(tmp_path):
+def test_a_results_folder_names_no_absolute_path_and_resumes_when_moved(sdt_from, tmp_path):
     home = tmp_path / "home"
     home.mkdir()
     manifest = _manifest(home / "pump")
     cache = tmp_path / "cache"
     args = ["--sensors", "adxl345", "--classifiers", "lr", "--quick"]
-    _sdt("benchmark", "--data", str(manifest), *args, "--out", "results", cwd=home, cache=cache)
+    sdt_from("benchmark", "--data", str(manifest), *args, "--out", "results", cwd=home, cache=cache)
     out = home / "results"
     assert _leaks(out, str(tmp_path)) == []
     assert 'data = "../pump/manifest.csv"' in (out / "config.toml").read_text()
 
     # resumed from its own config.toml, from another working directory
-    again = _sdt("benchmark", str(out / "config.toml"), "--out", str(out), cwd="/", cache=cache)
+    again = sdt_from("benchmark", str(out / "config.toml"), "--out", str(out), cwd="/", cache=cache)
     assert "(0 computed, 6 resumed, 0 failed)" in again.stdout
 
     # the folder and its data moved together: it runs again, with the same numbers
     moved = tmp_path / "elsewhere"
     shutil.copytree(home, moved)
-    _sdt("benchmark", "results/config.toml", "--out", "results", cwd=moved, cache=cache)
+    sdt_from("benchmark", "results/config.toml", "--out", "results", cwd=moved, cache=cache)
     before = (out / "table4.md").read_text()
     assert (moved / "results" / "table4.md").read_text() == before
 
 
-def test_an_exploration_writes_its_sweep_with_relative_paths(tmp_path):
+def test_an_exploration_writes_its_sweep_with_relative_paths(sdt_from, tmp_path):
     home = tmp_path / "home"
     home.mkdir()
     manifest = _manifest(home / "pump")
@@ -82,7 +94,7 @@ def test_an_exploration_writes_its_sweep_with_relative_paths(tmp_path):
     )
     cache = tmp_path / "cache"
     exhaustive = ("--strategy", "exhaustive")  # the strategy whose folder holds sweep.toml
-    _sdt(
+    sdt_from(
         "explore",
         str(sweep),
         "--out",
@@ -95,7 +107,7 @@ def test_an_exploration_writes_its_sweep_with_relative_paths(tmp_path):
     written = (home / "explored" / "sweep.toml").read_text(encoding="utf-8")
     assert str(tmp_path) not in written
     assert 'data = "../pump/manifest.csv"' in written
-    again = _sdt(
+    again = sdt_from(
         "explore",
         "explored/sweep.toml",
         "--out",

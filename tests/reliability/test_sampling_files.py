@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import os
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -27,21 +25,21 @@ analog_cutoff_hz = 1500
 FILTER = "digital_cutoff_hz = 1000\ndigital_order = 8"
 
 
-def _sdt(tmp_path: Path, text: str) -> subprocess.CompletedProcess[str]:
+pytestmark = pytest.mark.in_process  # ``sensors show`` starts no worker: sdt in this process
+
+
+def _sdt(sdt, tmp_path: Path, text: str) -> subprocess.CompletedProcess[str]:
     path = tmp_path / "s.toml"
     path.write_text(text)
-    command = [sys.executable, "-m", "sdt_framework", "--sensor-file", str(path)]
-    return subprocess.run(
-        [*command, "sensors", "show", "my-357"], capture_output=True, text=True, cwd=tmp_path
-    )
+    return sdt("--sensor-file", str(path), "sensors", "show", "my-357")
 
 
-def test_a_sensor_file_can_ask_for_the_decimating_model(tmp_path: Path) -> None:
+def test_a_sensor_file_can_ask_for_the_decimating_model(sdt, tmp_path: Path) -> None:
     path = tmp_path / "s.toml"
     path.write_text(PROFILE.format(sampling="decimate", digital=FILTER))
     (sensor,) = load_sensor_file(path)
     assert sensor.sampling == "decimate"
-    shown = _sdt(tmp_path, PROFILE.format(sampling="decimate", digital=FILTER))
+    shown = _sdt(sdt, tmp_path, PROFILE.format(sampling="decimate", digital=FILTER))
     assert shown.returncode == 0 and "decimate" in shown.stdout
 
 
@@ -60,8 +58,10 @@ def test_a_sensor_file_can_ask_for_the_decimating_model(tmp_path: Path) -> None:
         ),
     ],
 )
-def test_a_bad_sampling_is_one_line_naming_the_file(tmp_path, sampling, digital, message) -> None:
-    result = _sdt(tmp_path, PROFILE.format(sampling=sampling, digital=digital))
+def test_a_bad_sampling_is_one_line_naming_the_file(
+    sdt, tmp_path, sampling, digital, message
+) -> None:
+    result = _sdt(sdt, tmp_path, PROFILE.format(sampling=sampling, digital=digital))
     assert result.returncode == 2
     assert result.stderr.count("\n") == 1 and "Traceback" not in result.stderr
     assert result.stderr.startswith(f"error: {tmp_path / 's.toml'}: ")
@@ -114,10 +114,8 @@ def test_a_part_citing_a_missing_document_for_its_sampling_is_refused() -> None:
         load_part_text(PART.format(digital="odr_fraction = 0.25", doc="dx"), "toy.toml")
 
 
-def test_sensors_show_says_the_paper_profiles_are_the_papers_model(tmp_path: Path) -> None:
-    command = [sys.executable, "-m", "sdt_framework", "sensors", "show"]
-    env = {**os.environ, "COLUMNS": "200"}
+def test_sensors_show_says_the_paper_profiles_are_the_papers_model(sdt, tmp_path: Path) -> None:
     for name, shown in (("adxl357", "sample-then-filter (the paper's model)"),
                         ("adxl345", "sample-then-filter (the paper's model)")):  # fmt: skip
-        out = subprocess.run([*command, name], capture_output=True, text=True, env=env).stdout
+        out = sdt("sensors", "show", name, env={"COLUMNS": "200"}).stdout
         assert shown in out, name

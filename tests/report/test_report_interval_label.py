@@ -14,8 +14,6 @@ interval that by itself says "worse".
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
 
 import pandas as pd
 from sklearn.metrics import f1_score
@@ -69,14 +67,9 @@ PRINTED = re.compile(
 )
 
 
-def test_group_table_label_agrees_with_the_printed_intervals(tmp_path):
+def test_group_table_label_agrees_with_the_printed_intervals(sdt_in_process, tmp_path):
     runs = _folder(tmp_path / "res")
-    result = subprocess.run(
-        [sys.executable, "-m", "sdt_framework", "report", str(tmp_path / "res"), "--format", "md"],
-        capture_output=True,
-        text=True,
-        check=False,
-    )
+    result = sdt_in_process("report", str(tmp_path / "res"), "--format", "md")  # no worker
     assert result.returncode == 0, result.stderr
     text = (tmp_path / "res" / "report.md").read_text(encoding="utf-8")
     text = re.sub(r"\\([\[\]])", r"\1", text)  # as a Markdown viewer shows "\[" (literal text)

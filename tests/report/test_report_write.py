@@ -3,8 +3,6 @@
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import pandas as pd
@@ -122,18 +120,13 @@ def test_unknown_format_is_refused_before_any_work(results_dir):
     assert not (results_dir / "figures").exists()
 
 
-def _sdt(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
-    code = "from sdt_framework.cli.main import main; main()"
-    return subprocess.run(
-        [sys.executable, "-c", code, *args], capture_output=True, text=True, cwd=cwd, timeout=300
-    )
-
-
-def test_cli_report_and_errors(results_dir, tmp_path):
-    done = _sdt("report", str(results_dir), "--format", "html", cwd=tmp_path)
+def test_cli_report_and_errors(results_dir, tmp_path, sdt_in_process, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    sdt = sdt_in_process  # the entry point, in this process: a report starts no benchmark
+    done = sdt("report", str(results_dir), "--format", "html")
     assert done.returncode == 0, done.stderr
     assert (results_dir / "report.html").is_file() and not (results_dir / "report.md").exists()
     assert "report.html" in done.stdout
-    missing = _sdt("report", str(tmp_path / "nowhere"), cwd=tmp_path)
+    missing = sdt("report", str(tmp_path / "nowhere"))
     assert missing.returncode == 2
     assert missing.stderr.strip().count("\n") == 0 and "nowhere" in missing.stderr
