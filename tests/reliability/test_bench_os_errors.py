@@ -21,6 +21,9 @@ from sdt_framework.io import atomic_write_text
 SMALL_CLI = ["benchmark", "--quick", "--machines", "Motor-2", "--sensors", "adxl345"]
 SMALL_CLI += ["--classifiers", "lr", "--channels", "ch1", "--jobs", "1", "--no-report"]
 
+#: the commands here are refused before any work: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
+
 
 def one_error_line(result) -> str:
     assert result.returncode == 2, result.stderr

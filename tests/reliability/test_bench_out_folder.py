@@ -15,6 +15,9 @@ from sdt_framework import SDTError
 from sdt_framework.bench.output import write_outputs
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
 
+#: the one command here is refused before any work: ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
+
 
 def finish(config, registry, out):
     result = run_benchmark(plan_benchmark(config, registry), out)

@@ -10,8 +10,12 @@ names the recording, its file and size, and what helps (shorter recordings).
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from ..helpers import six_recordings
+
+#: refused before any recording is read or worker started: ``sdt`` runs in this process
+pytestmark = pytest.mark.in_process
 
 SAMPLES = 6_250_000_000  # float64: 50 GB
 

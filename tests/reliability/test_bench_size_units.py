@@ -7,9 +7,6 @@ estimate, needed no ``--yes``, claimed the results folder and grew memory
 
 from __future__ import annotations
 
-import subprocess
-import sys
-
 import pytest
 
 from sdt_framework.bench.config import load_config
@@ -41,21 +38,13 @@ def test_units_multiply_the_runs_draws_and_memory(registry):
     assert drawn.seconds > 6 * nominal.seconds
 
 
-def test_a_million_units_is_refused_before_the_folder_is_claimed(tmp_path):
-    out = tmp_path / "out"
-    command = [sys.executable, "-m", "sdt_framework", "benchmark", "--quick"]
-    try:
-        result = subprocess.run(
-            [*command, "--units", "1000000", "--yes", "--out", str(out)],
-            capture_output=True,
-            text=True,
-            timeout=120,  # without the check it grows memory until it is killed
-            check=False,
-        )
-    except subprocess.TimeoutExpired:
-        pytest.fail("a benchmark of a million units started")
-    assert result.returncode == 2, result.stderr
-    line = result.stderr.strip()
+def test_a_million_units_is_refused_before_the_folder_is_claimed(sdt_main, tmp_path, no_run):
+    out = tmp_path / "out"  # without the check it would grow memory: no_run fails it instead
+    code, _, err = sdt_main(
+        "benchmark", "--quick", "--units", "1000000", "--yes", "--out", str(out)
+    )
+    assert code == 2, err
+    line = err.strip()
     assert "\n" not in line and "Traceback" not in line
     # even --yes does not start what cannot fit; the line names --units and the size
     assert line.startswith(

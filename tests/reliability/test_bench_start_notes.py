@@ -11,9 +11,13 @@ from __future__ import annotations
 import re
 import shlex
 
+import pytest
 import typer
 
 from sdt_framework.cli.main import app
+
+#: the benchmark runs with --jobs 1 (no worker): ``sdt`` runs in this process (conftest.py)
+pytestmark = pytest.mark.in_process
 
 ARGS = ["--quick", "--machines", "Motor-2", "--channels", "ch1", "--classifiers", "lr"]
 

@@ -12,14 +12,22 @@ from __future__ import annotations
 
 import os
 import shutil
+import time
 from pathlib import Path
 
 import pandas as pd
+import pytest
 from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 from sdt_framework.data import write_nln_emp
+from sdt_framework.data.digest import SETTLE_NS
 
 ARGS = ["--quick", "--sensors", "wilcoxon-786b10", "--classifiers", "lr", "--no-report"]
+ARGS += ["--jobs", "1"]  # the same features at any --jobs (test_bench_jobs.py); no worker
+
+#: the cache, not workers, is the subject: ``sdt`` runs in this process (conftest.py), where
+#: nothing a run keeps in memory may serve the corrected file either
+pytestmark = pytest.mark.in_process
 
 
 def _correct(csv: Path, scratch: Path) -> None:
@@ -45,6 +53,9 @@ def _features(folder: Path) -> pd.DataFrame:
 def test_a_corrected_file_of_the_same_size_and_mtime_is_read_again(sdt, tmp_path):
     root = tmp_path / "pump"
     write_nln_emp(open_synthetic(duration=1.5, machines="Motor-2", channels="ch1"), root)
+    # the files settle (a digest is remembered only then), as a real process's start gave them:
+    # the first run remembers the old files' digests, which must not serve the corrected ones
+    time.sleep(SETTLE_NS / 1e9 + 0.2)
     cache = tmp_path / "cache"  # the sdt fixture's SDT_CACHE_DIR
     first = sdt("benchmark", "--data", str(root), *ARGS, "--out", str(tmp_path / "a"))
     assert first.returncode == 0, first.stderr

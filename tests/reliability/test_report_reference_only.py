@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from sdt_framework.severity import alarm_thresholds, builtin_tables
 from sdt_framework.severity.tables import Assignment
@@ -20,6 +21,16 @@ from sdt_framework.severity.tables import Assignment
 from ..helpers import MANIFEST_HEADER
 
 NONE_TO_GRADE = "Not shown: no sensor besides the reference '{}' has windows to grade against it"
+
+#: the report's text is the subject: ``sdt`` runs in this process (conftest.py), the
+#: benchmarks with --jobs 1 (the same results at any --jobs, test_bench_jobs.py)
+pytestmark = pytest.mark.in_process
+
+
+@pytest.fixture(autouse=True)
+def _figures_drawn_here(monkeypatch):
+    """The report draws its figures in this process (as on a machine of fewer than 4 cores)."""
+    monkeypatch.setattr("sdt_framework.report.figures.PARALLEL_FROM_CORES", 10**6)
 
 
 def _severity(report: str) -> str:
@@ -29,7 +40,8 @@ def _severity(report: str) -> str:
 def test_reference_only_benchmark_writes_its_report(sdt, tmp_path):
     out = tmp_path / "out"
     done = sdt("benchmark", "--quick", "--sensors", "wilcoxon-786b10", "--classifiers", "lr",
-               "--machines", "Motor-2", "--channels", "ch1", "--out", str(out))  # fmt: skip
+               "--machines", "Motor-2", "--channels", "ch1", "--jobs", "1",
+               "--out", str(out))  # fmt: skip
     assert done.returncode == 0, done.stderr[-2000:]
     assert "internal error" not in done.stderr
     section = _severity((out / "report.md").read_text(encoding="utf-8"))
@@ -50,7 +62,7 @@ def test_every_mems_profile_skipped_at_1500_hz_writes_the_report(sdt, tmp_path):
     config.write_text('[benchmark]\nzones = { m = "iso10816-3-group2-rigid" }\n')
     out = tmp_path / "out"
     done = sdt("benchmark", str(config), "--data", str(tmp_path / "m.csv"), "--quick",
-               "--classifiers", "lr", "--out", str(out))  # fmt: skip
+               "--classifiers", "lr", "--jobs", "1", "--out", str(out))  # fmt: skip
     assert done.returncode == 0, done.stderr[-2000:]
     assert "internal error" not in done.stderr
     results = pd.read_parquet(out / "results.parquet")

@@ -6,6 +6,9 @@ from __future__ import annotations
 
 import pytest
 
+#: refused before any worker starts (default --jobs kept): ``sdt`` runs in this process
+pytestmark = pytest.mark.in_process
+
 
 @pytest.mark.parametrize(
     ("option", "message"),
