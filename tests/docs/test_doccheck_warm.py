@@ -71,7 +71,7 @@ def test_without_a_server_the_client_runs_the_installed_sdt(warm, tmp_path):
 def _ask(warm: WarmStart, script: Path, out: Path) -> socket.socket:
     """Start ``python script`` through the server as the client does; stdout into ``out``."""
     link = socket.socket(socket.AF_UNIX, socket.SOCK_SEQPACKET)
-    link.connect(str(warm.socket))
+    link.connect(str(warm.address))
     request = {"argv": [str(script)], "cwd": str(script.parent), "env": dict(os.environ),
                "ignored": []}  # fmt: skip
     with open(os.devnull) as stdin, out.open("w") as stdout:

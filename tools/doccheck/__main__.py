@@ -55,7 +55,12 @@ def main(argv: list[str] | None = None) -> int:
         with contextlib.ExitStack() as stack:
             folder = stack.enter_context(tempfile.TemporaryDirectory(prefix="doccheck-cache-"))
             cache = Path(os.environ.get("SDT_CACHE_DIR") or folder)  # one cache for all documents
-            warm = None if args.cold else stack.enter_context(WarmStart())
+            warm = None
+            if not args.cold:
+                try:
+                    warm = stack.enter_context(WarmStart())
+                except (OSError, RuntimeError) as error:
+                    print(f"note: every sdt starts fresh ({error})", file=sys.stderr)
             return check(args, cache, warm)
     finally:
         signal.signal(signal.SIGTERM, before)

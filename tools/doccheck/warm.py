@@ -86,13 +86,18 @@ sys.exit(status)
 class WarmStart:
     """The server process and the folder holding the client ``sdt`` (a context manager)."""
 
+    bin: Path  # the folder of the client ``sdt``, first on a warm command's PATH
+    address: Path  # the server's socket
+
     def __init__(self) -> None:
-        self.folder = Path(tempfile.mkdtemp(prefix="doccheck-warm-"))
-        self.bin = self.folder / "bin"
-        self.socket = self.folder / "server.sock"
+        self.folder: Path | None = None  # made on entering, removed on leaving
         self.process: subprocess.Popen | None = None
 
     def __enter__(self) -> WarmStart:
+        if not (hasattr(os, "pidfd_open") and hasattr(socket, "SOCK_SEQPACKET")):
+            raise RuntimeError("a warm start needs Linux (pidfd_open, SOCK_SEQPACKET sockets)")
+        self.folder = Path(tempfile.mkdtemp(prefix="doccheck-warm-"))
+        self.bin, self.address = self.folder / "bin", self.folder / "server.sock"
         real = Path(sys.executable).parent / "sdt"
         self.bin.mkdir()
         client = self.bin / "sdt"
@@ -102,7 +107,7 @@ class WarmStart:
         (self.folder / "home").mkdir()
         env = {**os.environ, "HOME": str(self.folder / "home")}  # as empty as a sandbox's
         self.process = subprocess.Popen(
-            [sys.executable, "-m", "tools.doccheck.warm", str(self.socket)],
+            [sys.executable, "-m", "tools.doccheck.warm", str(self.address)],
             cwd=Path(__file__).resolve().parents[2],
             env=env,
             stdin=subprocess.DEVNULL,
@@ -118,13 +123,15 @@ class WarmStart:
     def environment(self, env: dict[str, str]) -> dict[str, str]:
         """``env`` with the client first on PATH and the server's address."""
         return {**env, "PATH": f"{self.bin}{os.pathsep}{env['PATH']}",
-                "SDT_WARM_SOCKET": str(self.socket)}  # fmt: skip
+                "SDT_WARM_SOCKET": str(self.address)}  # fmt: skip
 
     def __exit__(self, *exc: object) -> None:
         if self.process is not None and self.process.poll() is None:
             self.process.terminate()
             self.process.wait()
-        shutil.rmtree(self.folder, ignore_errors=True)
+        if self.folder is not None:
+            shutil.rmtree(self.folder, ignore_errors=True)
+            self.folder = None
 
 
 def serve(address: str) -> str | None:
