@@ -35,6 +35,11 @@ from typing import Any, NoReturn
 import click
 from typer.core import TyperGroup
 
+try:  # a typer that carries its own copy of click raises that copy's usage errors
+    from typer._click.exceptions import NoArgsIsHelpError, UsageError
+except ImportError:  # an older typer parses with click itself
+    from click.exceptions import NoArgsIsHelpError, UsageError
+
 from ..errors import INTERNAL_EXIT, SDTError, SDTWarning, UserInterruptError, one_line
 from .common import print_error, warn
 
@@ -121,15 +126,41 @@ def _interrupt(exc: BaseException) -> UserInterruptError:
     return UserInterruptError(one_line(f"stopped by Ctrl-C. {notes}".strip(), 400))
 
 
+def _usage(exc: UsageError) -> SDTError:
+    """A mistyped command line as one ``error:`` line (exit 2), not a usage box of five."""
+    names, ctx = [], exc.ctx
+    while ctx is not None and ctx.parent is not None:  # the root's name is always sdt
+        names.append(ctx.info_name)
+        ctx = ctx.parent
+    where = f"; see {' '.join(['sdt', *reversed(names)])} --help" if exc.ctx is not None else ""
+    return SDTError(one_line(exc.format_message().rstrip("."), 400) + where)
+
+
 class InterruptibleGroup(TyperGroup):
-    """The root group: Ctrl-C inside any command becomes :class:`UserInterruptError`."""
+    """The root group: Ctrl-C inside any command becomes :class:`UserInterruptError`, and a
+    mistyped option, value or command one ``error:`` line (``sdt`` or a group alone still
+    prints its help)."""
+
+    def make_context(self, *args: Any, **kwargs: Any) -> click.Context:
+        """Parse ``sdt``'s own options; a usage error there becomes one line."""
+        try:
+            return super().make_context(*args, **kwargs)
+        except NoArgsIsHelpError:
+            raise
+        except UsageError as exc:
+            raise _usage(exc) from exc
 
     def invoke(self, ctx: click.Context) -> Any:
-        """Run the command; turn KeyboardInterrupt into one ``interrupted:`` line, exit 130."""
+        """Run the command; turn KeyboardInterrupt into one ``interrupted:`` line, exit 130,
+        and a usage error of the command's options or of a command name into one line."""
         try:
             return super().invoke(ctx)
         except KeyboardInterrupt as exc:
             raise _interrupt(exc) from exc
+        except NoArgsIsHelpError:
+            raise
+        except UsageError as exc:
+            raise _usage(exc) from exc
 
 
 def _show_warning_line(show: Callable[..., None]) -> Callable[..., None]:
