@@ -73,11 +73,11 @@ class Sandbox:
         a crash before the pipe still shows as a traceback or missing lines.
         """
         command = TMP.sub(f"{self.root}/tmp/", command)
-        env = self.environment(columns)
-        # a warm command's CPU is its server's child's, not this shell's: its client writes it here
-        handle, cpu_file = tempfile.mkstemp(prefix="doccheck-cpu-")
-        os.close(handle)
-        env["SDT_WARM_CPU_FILE"] = cpu_file
+        env, cpu_file = self.environment(columns), None
+        if self.warm:  # a warm command's CPU is the server's child's: its client writes it here
+            handle, cpu_file = tempfile.mkstemp(prefix="doccheck-cpu-")
+            os.close(handle)
+            env["SDT_WARM_CPU_FILE"] = cpu_file
         start = time.monotonic()
         with _LOCK:
             if _STOPPED.is_set():
@@ -102,8 +102,9 @@ class Sandbox:
             process.returncode = status = os.waitstatus_to_exitcode(code)
         finally:  # the checker stopped (Ctrl-C, SIGTERM): stop the command it started
             timer.cancel()
-            warm_cpu = sum(map(float, Path(cpu_file).read_text().split()))
-            os.unlink(cpu_file)
+            warm_cpu = sum(map(float, Path(cpu_file).read_text().split())) if cpu_file else 0.0
+            if cpu_file:
+                os.unlink(cpu_file)
             if process.returncode is None:
                 _stop(process.pid, expired)
             with _LOCK:

@@ -178,18 +178,17 @@ def _start(listener: socket.socket, loop: selectors.BaseSelector) -> str | None:
     for fd in fds:
         os.close(fd)
     pidfd = os.pidfd_open(pid)
-    loop.register(pidfd, selectors.EVENT_READ, ("ended", pid, link))
+    loop.register(pidfd, selectors.EVENT_READ, ("ended", pid, link, pidfd))
     loop.register(link, selectors.EVENT_READ, ("client", pid, link))
     return None
 
 
-def _ended(loop: selectors.BaseSelector, pid: int, link: socket.socket) -> None:
+def _ended(loop: selectors.BaseSelector, pid: int, link: socket.socket, pidfd: int) -> None:
     """The command ended: tell its client how, and forget both."""
-    for key in list(loop.get_map().values()):
-        if key.data and key.data[1] == pid:
-            loop.unregister(key.fileobj)
-            if isinstance(key.fileobj, int):
-                os.close(key.fileobj)
+    loop.unregister(pidfd)
+    os.close(pidfd)
+    if link in loop.get_map():  # not if the client is gone already
+        loop.unregister(link)
     _, status, usage = os.wait4(pid, 0)
     reply = {"status": os.waitstatus_to_exitcode(status), "cpu": usage.ru_utime + usage.ru_stime}
     with contextlib.suppress(OSError):  # the client is gone
