@@ -23,13 +23,14 @@ its line; the line and the exit status stay the same.
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import shlex
 import sys
 import traceback
 import warnings
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import Any, NoReturn
 
 import click
@@ -126,14 +127,21 @@ def _interrupt(exc: BaseException) -> UserInterruptError:
     return UserInterruptError(one_line(f"stopped by Ctrl-C. {notes}".strip(), 400))
 
 
-def _usage(exc: UsageError) -> SDTError:
-    """A mistyped command line as one ``error:`` line (exit 2), not a usage box of five."""
-    names, ctx = [], exc.ctx
-    while ctx is not None and ctx.parent is not None:  # the root's name is always sdt
-        names.append(ctx.info_name)
-        ctx = ctx.parent
-    where = f"; see {' '.join(['sdt', *reversed(names)])} --help" if exc.ctx is not None else ""
-    return SDTError(one_line(exc.format_message().rstrip("."), 400) + where)
+@contextlib.contextmanager
+def _usage_as_one_line() -> Iterator[None]:
+    """A mistyped command line as one ``error:`` line (exit 2), not a usage box of five;
+    ``sdt`` or a group alone still prints its help."""
+    try:
+        yield
+    except NoArgsIsHelpError:
+        raise
+    except UsageError as exc:
+        names, ctx = [], exc.ctx
+        while ctx is not None and ctx.parent is not None:  # the root's name is always sdt
+            names.append(ctx.info_name)
+            ctx = ctx.parent
+        where = f"; see {' '.join(['sdt', *reversed(names)])} --help" if exc.ctx else ""
+        raise SDTError(one_line(exc.format_message().rstrip("."), 400) + where) from exc
 
 
 class InterruptibleGroup(TyperGroup):
@@ -143,24 +151,17 @@ class InterruptibleGroup(TyperGroup):
 
     def make_context(self, *args: Any, **kwargs: Any) -> click.Context:
         """Parse ``sdt``'s own options; a usage error there becomes one line."""
-        try:
+        with _usage_as_one_line():
             return super().make_context(*args, **kwargs)
-        except NoArgsIsHelpError:
-            raise
-        except UsageError as exc:
-            raise _usage(exc) from exc
 
     def invoke(self, ctx: click.Context) -> Any:
         """Run the command; turn KeyboardInterrupt into one ``interrupted:`` line, exit 130,
         and a usage error of the command's options or of a command name into one line."""
         try:
-            return super().invoke(ctx)
+            with _usage_as_one_line():
+                return super().invoke(ctx)
         except KeyboardInterrupt as exc:
             raise _interrupt(exc) from exc
-        except NoArgsIsHelpError:
-            raise
-        except UsageError as exc:
-            raise _usage(exc) from exc
 
 
 def _show_warning_line(show: Callable[..., None]) -> Callable[..., None]:
