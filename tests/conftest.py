@@ -41,6 +41,8 @@ from sdt_plugins.sensors import wilcoxon_786b10 as builtin_reference
 from sdt_framework import build_registry
 from sdt_framework.specs import SensorSpec
 
+from .helpers import entry_status
+
 FakeDist = Callable[..., Path]
 CATALOG_MISSING = "the sensor catalogue is not installed: pip install -e plugins/sensors-catalog"
 
@@ -158,14 +160,7 @@ def readers(registry):
 def _sdt_here(args: tuple[str, ...], monkeypatch, capsys) -> tuple[int, str, str]:
     """``sdt ARGS`` through the console script's entry point in this process:
     (exit status, stdout, stderr), the status as the interpreter would exit with it."""
-    from sdt_framework.cli.entry import main
-
-    monkeypatch.setattr(sys, "argv", ["sdt", *args])
-    try:
-        main()
-        code = 0
-    except SystemExit as exc:
-        code = exc.code if isinstance(exc.code, int) else int(exc.code is not None)
+    code = entry_status(args, monkeypatch)
     out = capsys.readouterr()
     return code, out.out, out.err
 

@@ -56,6 +56,19 @@ def _cap_address_space(limit: int) -> None:
     resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
 
 
+def entry_status(args: Iterable[str], monkeypatch) -> int:
+    """``sdt ARGS`` through the console script's entry point in this process (``sys.argv`` set
+    with ``monkeypatch``); its exit status, as the interpreter would exit with it."""
+    from sdt_framework.cli.entry import main
+
+    monkeypatch.setattr(sys, "argv", ["sdt", *args])
+    try:
+        main()
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else int(exc.code is not None)
+    return 0
+
+
 def run_sdt(
     *args: str,
     cwd: Path | None = None,

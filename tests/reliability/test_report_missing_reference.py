@@ -11,11 +11,10 @@ from __future__ import annotations
 import contextlib
 import io
 import re
-import sys
 
 import pytest
 
-from sdt_framework.cli.entry import main
+from ..helpers import entry_status
 
 CONFIG = """\
 [benchmark]
@@ -43,14 +42,9 @@ def folder(tmp_path_factory: pytest.TempPathFactory):
     err = io.StringIO()
     with pytest.MonkeyPatch.context() as patch, contextlib.redirect_stdout(io.StringIO()):
         patch.chdir(root)
-        patch.setattr(sys, "argv", ["sdt", *args])
         patch.setattr(*ONE_PROCESS_FIGURES)
         with contextlib.redirect_stderr(err):
-            try:
-                main()
-                code = 0
-            except SystemExit as exc:
-                code = exc.code if isinstance(exc.code, int) else int(exc.code is not None)
+            code = entry_status(args, patch)
     assert code == 0, err.getvalue()
     return root
 
