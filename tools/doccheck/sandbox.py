@@ -75,7 +75,8 @@ class Sandbox:
         command = TMP.sub(f"{self.root}/tmp/", command)
         env, cpu_file = self.environment(columns), None
         if self.warm:  # a warm command's CPU is the server's child's: its client writes it here
-            handle, cpu_file = tempfile.mkstemp(prefix="doccheck-cpu-")
+            # (in the server's folder, removed with it even if the checker stops before the unlink)
+            handle, cpu_file = tempfile.mkstemp(prefix="cpu-", dir=self.warm.folder)
             os.close(handle)
             env["SDT_WARM_CPU_FILE"] = cpu_file
         start = time.monotonic()
