@@ -21,8 +21,10 @@ its spec, so unknown names and bad parameters are one-line errors.
 
 from __future__ import annotations
 
+import json
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any, ClassVar, Literal
 
 from pydantic import BaseModel, Field, field_validator, model_validator
@@ -178,5 +180,12 @@ class StageSpec(Spec):
         """Behaviour-defining fields plus the factory's name and the parameters' schema."""
         data = super().content_dict()
         data["factory"] = f"{self.factory.__module__}:{self.factory.__qualname__}"
-        data["params"] = self.params.model_json_schema()
+        data["params"] = json.loads(_schema_text(self.params))  # a fresh copy: callers edit it
         return data
+
+
+@lru_cache(maxsize=256)
+def _schema_text(params: type[BaseModel]) -> str:
+    """The JSON schema of a parameter model, built once per class (about a millisecond each
+    time, and a sensor's hash asks for it per stage, per chain compiled)."""
+    return json.dumps(params.model_json_schema())

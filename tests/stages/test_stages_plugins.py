@@ -229,3 +229,20 @@ def test_stage_spec_rejects_a_place_outside_its_domain():
             params=DcBlockParams,
             factory=DcBlock,
         )
+
+
+def test_a_stage_hash_follows_its_parameter_schema_and_each_content_dict_is_its_own():
+    """The parameter schema in a stage's content is pydantic's own for that class. It is
+    built once per class for speed, so a caller editing one ``content_dict`` must not change
+    the next, and a class with another field must give another hash."""
+    first = DC_BLOCK.content_dict()
+    assert first["params"] == DcBlockParams.model_json_schema()
+    first["params"]["properties"].clear()
+    assert DC_BLOCK.content_dict()["params"] == DcBlockParams.model_json_schema()
+
+    class WiderParams(DcBlockParams):
+        order: int = Field(default=1, ge=1, description="Filter order.")
+
+    wider = DC_BLOCK.model_copy(update={"params": WiderParams})
+    assert wider.content_dict()["params"] == WiderParams.model_json_schema()
+    assert wider.content_hash() != DC_BLOCK.content_hash()
