@@ -120,11 +120,24 @@ def _names(environ: Mapping[str, str], key: str) -> set[str] | None:
     return {_norm(part) for part in listed} if listed else None
 
 
-def _entry_points() -> list[md.EntryPoint]:
-    unique: dict[tuple[str, str, str], md.EntryPoint] = {}
+def _entry_points() -> list[tuple[md.EntryPoint, str, str]]:
+    """Every ``sdt_framework`` entry point with its distribution's name and version.
+
+    A distribution's metadata is parsed once, not once per entry point and field:
+    ``Distribution.name`` and ``.version`` each parse the whole METADATA file again,
+    which made discovery most of a command's start-up.
+    """
+    named: dict[int, tuple[str, str]] = {}
+    unique: dict[tuple[str, str, str], tuple[md.EntryPoint, str, str]] = {}
     for ep in md.entry_points(group=PROJECT):
-        dist = ep.dist.name if ep.dist else "?"
-        unique.setdefault((_norm(dist), ep.name, ep.value), ep)
+        if ep.dist is None:
+            dist, version = "?", "?"
+        else:
+            if id(ep.dist) not in named:
+                meta = ep.dist.metadata
+                named[id(ep.dist)] = (meta["Name"], meta["Version"])
+            dist, version = named[id(ep.dist)]
+        unique.setdefault((_norm(dist), ep.name, ep.value), (ep, dist, version))
     return [unique[key] for key in sorted(unique)]
 
 
@@ -138,9 +151,7 @@ def discover(environ: Mapping[str, str] | None = None) -> list[LoadedPlugin | Pl
     only = _names(environ, ENV_ONLY)
     blocked = _names(environ, ENV_BLOCK) or set()
     results: list[LoadedPlugin | PluginInfo] = []
-    for ep in _entry_points():
-        dist = ep.dist.name if ep.dist else "?"
-        version = ep.dist.version if ep.dist else "?"
+    for ep, dist, version in _entry_points():
         info = PluginInfo(ep.name, dist, version, "loaded")
         keys = {_norm(ep.name), _norm(dist)}
         if keys & blocked:

@@ -44,8 +44,8 @@ def uninstalled(monkeypatch):
     """Entry points as if the catalogue distribution were not installed."""
     real = discovery._entry_points
 
-    def without() -> list[md.EntryPoint]:
-        return [ep for ep in real() if not (ep.dist and ep.dist.name == DIST)]
+    def without() -> list[tuple[md.EntryPoint, str, str]]:
+        return [found for found in real() if found[1] != DIST]
 
     monkeypatch.setattr(discovery, "_entry_points", without)
 
