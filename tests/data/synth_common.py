@@ -10,10 +10,10 @@ FS = 20000.0
 def measure(x: np.ndarray) -> dict[str, float]:
     """RMS, peak, Pearson kurtosis and crest factor, as the real statistics define them
     (tests/data/nln_emp_stats/README.md)."""
-    rms = float(np.sqrt(np.mean(x**2)))
-    centred = x - x.mean()
+    rms = float(np.sqrt(np.mean(x * x)))
+    squared = (x - x.mean()) ** 2  # squared twice, not ``** 4``: numpy's pow is 5x slower
     peak = float(np.max(np.abs(x)))
-    kurtosis = float(np.mean(centred**4) / np.mean(centred**2) ** 2)
+    kurtosis = float(np.mean(squared * squared) / np.mean(squared) ** 2)
     return {"rms_g": rms, "peak_g": peak, "kurtosis_pearson": kurtosis, "crest_factor": peak / rms}
 
 
