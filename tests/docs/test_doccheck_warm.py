@@ -29,6 +29,7 @@ COMMANDS = [
     "sdt benchmark nosuch.toml",  # one error line, exit 2
     "sdt budget --axes abc",  # click's usage error
     "echo 'x: 1' > s.toml; sdt --sensor-file s.toml sensors list",  # a bad file, folder-relative
+    "COLUMNS=60 sdt sensors list --max-price 15EUR",  # the width of this command, not the server's
 ]
 
 
@@ -125,3 +126,20 @@ def _wait_for(path: Path) -> None:
     while not path.exists() and time.monotonic() < deadline:
         time.sleep(0.02)
     assert path.exists(), f"{path.name} never appeared"
+
+
+def test_the_server_loads_sdt_and_its_plugins_but_never_its_command_line():
+    """sdt's command line builds rich's consoles as it loads, and they would keep the server's
+    ``COLUMNS``; the rest of sdt and its plugins are loaded once, for every command."""
+    code = (
+        "import json, sys; from tools.doccheck.warm import _preload; _preload(); "
+        "print(json.dumps(sorted(m for m in sys.modules if m.startswith('sdt'))))"
+    )
+    root = Path(__file__).resolve().parents[2]
+    env = {**os.environ, "COLUMNS": "33"}
+    done = subprocess.run(
+        [sys.executable, "-c", code], cwd=root, env=env, capture_output=True, text=True, check=True
+    )
+    loaded = set(json.loads(done.stdout))
+    assert {"sdt_framework.bench", "sdt_framework.report", "sdt_plugins.sensors.adxl345"} <= loaded
+    assert not [m for m in loaded if m.startswith("sdt_framework.cli")]

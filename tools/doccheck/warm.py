@@ -3,10 +3,11 @@
 A fresh ``sdt`` spends 0.5-3 s importing numpy, scipy, pandas and scikit-learn
 before it does anything, and the documents run a few hundred of them. The
 checker starts one server (:class:`WarmStart`) that imports those libraries
-(never sdt's own modules, which read the environment as they load: rich's
-consoles take ``COLUMNS`` then), and puts a small ``sdt`` first on the
-sandbox's PATH. That client hands the server its standard streams, arguments,
-folder, environment and ignored signals; the server forks a child that becomes
+and sdt's own modules and plugins (never its command line, ``sdt_framework.cli``,
+which reads the environment as it loads: rich's consoles take ``COLUMNS``
+then), and puts a small ``sdt`` first on the sandbox's PATH. That client hands
+the server its standard streams, arguments, folder, environment and ignored
+signals; the server forks a child that becomes
 the command: it takes them on, starts its own session (so a timeout's kill
 reaches its workers too) and runs the installed ``sdt`` console script as
 ``__main__``, as a fresh interpreter would. The child's exit status and CPU
@@ -21,9 +22,11 @@ from __future__ import annotations
 import contextlib
 import gc
 import importlib
+import importlib.metadata
 import io
 import json
 import os
+import pkgutil
 import runpy
 import selectors
 import shutil
@@ -135,15 +138,14 @@ class WarmStart:
 
 
 def serve(address: str) -> str | None:
-    """Load :data:`PRELOAD`, then fork a child per request; in a child, return the script to run.
+    """Load the libraries (:func:`_preload`), then fork a child per request; in a child, return
+    the script to run.
 
     One thread, one loop: a request forks at once; a child's end (its pidfd) sends the
     client the status and CPU; a client's message relays a signal; a client gone (the
     command timed out and its shell was killed) kills the child's session.
     """
-    for name in PRELOAD:
-        with contextlib.suppress(ImportError):  # an optional library not installed
-            importlib.import_module(name)
+    _preload()
     # what is loaded stays: a child's collector must not walk it (and copy every page it touches)
     gc.freeze()
     parent = os.getppid()
@@ -164,6 +166,27 @@ def serve(address: str) -> str | None:
             else:
                 _from_client(loop, *key.data[1:])
     return None
+
+
+def _preload() -> None:
+    """Import :data:`PRELOAD`, then sdt's packages but its command line, and its plugins.
+
+    A plugin that fails to import is left out: a command's discovery meets the same error.
+    """
+    for name in PRELOAD:
+        with contextlib.suppress(ImportError):  # an optional library not installed
+            importlib.import_module(name)
+    import sdt_framework
+
+    own = [m.name for m in pkgutil.iter_modules(sdt_framework.__path__, "sdt_framework.")]
+    plugins = {ep.module for ep in importlib.metadata.entry_points(group="sdt_framework")}
+    for name in [*own, *sorted(plugins)]:
+        if name not in {"sdt_framework.cli", "sdt_framework.__main__"}:
+            with contextlib.suppress(Exception):
+                importlib.import_module(name)
+    loaded = sorted(m for m in sys.modules if m.split(".")[:2] == ["sdt_framework", "cli"])
+    if loaded:  # its consoles would keep this server's environment
+        raise RuntimeError(f"the command line was loaded before any command: {loaded[:3]}")
 
 
 def _start(listener: socket.socket, loop: selectors.BaseSelector) -> str | None:
