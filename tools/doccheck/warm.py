@@ -7,10 +7,10 @@ and sdt's own modules and plugins (never its command line, ``sdt_framework.cli``
 which reads the environment as it loads: rich's consoles take ``COLUMNS``
 then), and puts a small ``sdt`` first on the sandbox's PATH. That client hands
 the server its standard streams, arguments, folder, environment and ignored
-signals; the server forks a child that becomes
-the command: it takes them on, starts its own session (so a timeout's kill
-reaches its workers too) and runs the installed ``sdt`` console script as
-``__main__``, as a fresh interpreter would. The child's exit status and CPU
+signals; the server forks a child that becomes the command: it takes them on,
+starts its own session (so a timeout's kill reaches its workers too) and runs
+the installed ``sdt`` console script as ``__main__``, as a fresh interpreter
+would. The child's exit status and CPU
 seconds go back to the client, which exits with that status. A client that
 finds no server runs the installed ``sdt`` itself.
 
@@ -176,7 +176,7 @@ def _preload() -> None:
     for name in PRELOAD:
         with contextlib.suppress(ImportError):  # an optional library not installed
             importlib.import_module(name)
-    import sdt_framework
+    import sdt_framework  # here, not at the top: the checker imports this module too
 
     own = [m.name for m in pkgutil.iter_modules(sdt_framework.__path__, "sdt_framework.")]
     plugins = {ep.module for ep in importlib.metadata.entry_points(group="sdt_framework")}
