@@ -13,6 +13,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 ROOT = Path(__file__).resolve().parents[2]
 BURN = "import time\nend = time.process_time() + 0.4\nwhile time.process_time() < end:\n    pass\n"
 MODULE = f"""
@@ -55,10 +57,15 @@ def test_each_tests_cpu_is_counted_where_it_was_spent_and_summed_per_file(tmp_pa
     assert float(own) >= 0.38 and float(child) >= 0.38
 
 
-def test_an_empty_folder_is_one_line_and_exit_2(tmp_path):
+@pytest.mark.parametrize(
+    ("content", "said"), [(None, "no test rows"), ("not json\n", "gw0.jsonl:1: not a JSON line")]
+)
+def test_an_empty_folder_or_a_damaged_line_is_one_line_and_exit_2(tmp_path, content, said):
+    if content is not None:
+        (tmp_path / "gw0.jsonl").write_text(content, encoding="utf-8")
     done = subprocess.run(
         [sys.executable, "-m", "tools.testcpu", str(tmp_path)],
         cwd=ROOT, capture_output=True, text=True, check=False,
     )  # fmt: skip
     assert done.returncode == 2 and done.stdout == ""
-    assert done.stderr.count("\n") == 1 and "no test rows" in done.stderr
+    assert done.stderr.count("\n") == 1 and said in done.stderr

@@ -17,8 +17,8 @@ def read_rows(folder: Path) -> list[dict]:
             try:
                 rows.append(json.loads(line))
             except json.JSONDecodeError:
-                raise SystemExit(f"error: {path}:{number}: not a JSON line; delete the folder "
-                                 f"and run the suite again") from None  # fmt: skip
+                raise ValueError(f"{path}:{number}: not a JSON line; delete the folder and "
+                                 f"run the suite again") from None  # fmt: skip
     return rows
 
 
@@ -46,7 +46,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--top", type=int, default=25, help="how many lines (default 25)")
     parser.add_argument("--tests", action="store_true", help="single tests, not files")
     args = parser.parse_args(argv)
-    rows = read_rows(args.folder)
+    if args.top < 1:
+        parser.error(f"--top {args.top}: give 1 or more lines")
+    try:
+        rows = read_rows(args.folder)
+    except (ValueError, OSError) as error:
+        print(f"error: {error}", file=sys.stderr)
+        return 2
     if not rows:
         print(f"error: {args.folder}: no test rows; run pytest with -p tools.testcpu.plugin "
               f"--test-cpu {args.folder} first", file=sys.stderr)  # fmt: skip
