@@ -58,13 +58,20 @@ def test_each_tests_cpu_is_counted_where_it_was_spent_and_summed_per_file(tmp_pa
 
 
 @pytest.mark.parametrize(
-    ("content", "said"), [(None, "no test rows"), ("not json\n", "gw0.jsonl:1: not a JSON line")]
+    ("content", "extra", "said"),
+    [
+        (None, [], "no test rows"),
+        ("not json\n", [], "gw0.jsonl:1: not a JSON line"),
+        ('{"id": "t.py::a", "self": 1, "children": 0, "wall": 1}\n', ["--top", "0"], "--top 0"),
+    ],
 )
-def test_an_empty_folder_or_a_damaged_line_is_one_line_and_exit_2(tmp_path, content, said):
+def test_an_empty_folder_a_damaged_line_or_no_lines_asked_is_one_line_and_exit_2(
+    tmp_path, content, extra, said
+):
     if content is not None:
         (tmp_path / "gw0.jsonl").write_text(content, encoding="utf-8")
     done = subprocess.run(
-        [sys.executable, "-m", "tools.testcpu", str(tmp_path)],
+        [sys.executable, "-m", "tools.testcpu", str(tmp_path), *extra],
         cwd=ROOT, capture_output=True, text=True, check=False,
     )  # fmt: skip
     assert done.returncode == 2 and done.stdout == ""

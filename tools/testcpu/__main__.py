@@ -47,7 +47,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--tests", action="store_true", help="single tests, not files")
     args = parser.parse_args(argv)
     if args.top < 1:
-        parser.error(f"--top {args.top}: give 1 or more lines")
+        print(f"error: --top {args.top}: give 1 or more lines", file=sys.stderr)
+        return 2
     try:
         rows = read_rows(args.folder)
     except (ValueError, OSError) as error:
