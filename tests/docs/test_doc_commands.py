@@ -8,6 +8,7 @@ annotated ``skip`` name why they cannot run here and are listed there.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
 from concurrent.futures import Future, ThreadPoolExecutor
@@ -19,7 +20,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
 from tools.doccheck.extract import Command, all_steps
 from tools.doccheck.runner import Result, run_doc
-from tools.doccheck.warm import WarmStart
+from tools.doccheck.warm import warm_or_cold
 
 STEPS = all_steps()
 FAST = [
@@ -42,7 +43,8 @@ def verdicts(request, tmp_path_factory) -> dict[str, Future]:
     (``tools/doccheck/warm.py``).
     """
     cache = tmp_path_factory.mktemp("doccheck-cache")
-    warm = WarmStart().__enter__()
+    stack = contextlib.ExitStack()
+    warm = warm_or_cold(stack)  # as python -m tools.doccheck: cold, with a note, off Linux
     # other tests name a parameter "command" too (a string there): keep this file's only
     params = [getattr(item, "callspec", None) for item in request.session.items]
     docs = {
@@ -52,7 +54,7 @@ def verdicts(request, tmp_path_factory) -> dict[str, Future]:
     }
     workers = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
     pool = ThreadPoolExecutor(max_workers=max(1, 2 // workers))
-    request.addfinalizer(lambda: warm.__exit__(None, None, None))
+    request.addfinalizer(stack.close)
     request.addfinalizer(pool.shutdown)  # finalizers run last first: the pool ends, then warm
 
     def run(doc: str) -> dict[str, Result]:

@@ -143,3 +143,22 @@ def test_the_server_loads_sdt_and_its_plugins_but_never_its_command_line():
     loaded = set(json.loads(done.stdout))
     assert {"sdt_framework.bench", "sdt_framework.report", "sdt_plugins.sensors.adxl345"} <= loaded
     assert not [m for m in loaded if m.startswith("sdt_framework.cli")]
+
+
+def test_where_no_server_can_start_every_command_starts_fresh_with_one_note(monkeypatch, capsys):
+    """The checker and the suite's documented commands share one fallback (``warm_or_cold``)."""
+    import contextlib
+
+    from tools.doccheck import warm as module
+
+    def refuse(self):
+        raise RuntimeError("a warm start needs Linux (pidfd_open, SOCK_SEQPACKET sockets)")
+
+    monkeypatch.setattr(module.WarmStart, "__enter__", refuse)
+    with contextlib.ExitStack() as stack:
+        assert module.warm_or_cold(stack) is None
+    err = capsys.readouterr().err
+    assert (
+        err == "note: every sdt starts fresh (a warm start needs Linux (pidfd_open, "
+        "SOCK_SEQPACKET sockets))\n"
+    )

@@ -24,7 +24,7 @@ from pathlib import Path
 from .extract import ROOT, Command, all_steps
 from .runner import Result, run_doc
 from .sandbox import stop_all
-from .warm import WarmStart
+from .warm import WarmStart, warm_or_cold
 
 LABEL = {"passed": "PASS", "failed": "FAIL", "skipped": "SKIP", "xfailed": "XFAIL"}
 
@@ -55,13 +55,7 @@ def main(argv: list[str] | None = None) -> int:
         with contextlib.ExitStack() as stack:
             folder = stack.enter_context(tempfile.TemporaryDirectory(prefix="doccheck-cache-"))
             cache = Path(os.environ.get("SDT_CACHE_DIR") or folder)  # one cache for all documents
-            warm = None
-            if not args.cold:
-                try:
-                    warm = stack.enter_context(WarmStart())
-                except (OSError, RuntimeError) as error:
-                    print(f"note: every sdt starts fresh ({error})", file=sys.stderr)
-            return check(args, cache, warm)
+            return check(args, cache, None if args.cold else warm_or_cold(stack))
     finally:
         signal.signal(signal.SIGTERM, before)
 

@@ -137,6 +137,16 @@ class WarmStart:
             self.folder = None
 
 
+def warm_or_cold(stack: contextlib.ExitStack) -> WarmStart | None:
+    """A started server, entered on ``stack``; None, with one note, where none can start
+    (not Linux, or the server failed): every ``sdt`` then starts fresh."""
+    try:
+        return stack.enter_context(WarmStart())
+    except (OSError, RuntimeError) as error:
+        print(f"note: every sdt starts fresh ({error})", file=sys.stderr)
+        return None
+
+
 def serve(address: str) -> str | None:
     """Load the libraries (:func:`_preload`), then fork a child per request; in a child, return
     the script to run.
@@ -177,9 +187,10 @@ def _preload() -> None:
         with contextlib.suppress(ImportError):  # an optional library not installed
             importlib.import_module(name)
     import sdt_framework  # here, not at the top: the checker imports this module too
+    from sdt_framework.hookspecs import PROJECT
 
     own = [m.name for m in pkgutil.iter_modules(sdt_framework.__path__, "sdt_framework.")]
-    plugins = {ep.module for ep in importlib.metadata.entry_points(group="sdt_framework")}
+    plugins = {ep.module for ep in importlib.metadata.entry_points(group=PROJECT)}
     for name in [*own, *sorted(plugins)]:
         if name not in {"sdt_framework.cli", "sdt_framework.__main__"}:
             with contextlib.suppress(Exception):
