@@ -26,20 +26,23 @@ value cut off (``0.330`` of ``0.330112``), and a segment holding fewer rows
 than a channel's ``Samples`` lost its end. lvm_read turns a cell it cannot
 parse into NaN (refused by name); a header field that is not a number is named
 with its line. A parsed file is kept for the next call on the same content
-(SHA-256 of the file's bytes, the last two files): scanning, probing and reading
-each channel of a file parse it once in a process, not once per call.
+(SHA-256 of the file's bytes), the most recently used files up to
+:data:`PARSED_KEEP_BYTES` of arrays: scanning, probing and reading each channel
+of a file parse it once in a process, not once per call, even where a
+benchmark probes every file of a campaign before it reads the first.
 """
 
 from __future__ import annotations
 
 import hashlib
 import re
+import threading
 from collections import Counter
-from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+from cachetools import LRUCache, cached
 from sdt_plugins.readers.lvm_layout import (
     Channel,
     segment_channels,
@@ -72,6 +75,11 @@ _ADVICE = (
     "save the recording from LabVIEW as TDMS (Write To Measurement File, format TDMS), or "
     "split it into LVM files of at most 50 MB"
 )
+#: parsed arrays kept for the next call, bytes. A benchmark probes every file before it reads
+#: any, so the former bound of two files parsed each file of a campaign twice. The largest
+#: file's arrays take up to 200 MB (a 2-byte cell, ``0`` and its separator, as 8 bytes), so
+#: this holds at least the last file parsed and never more than the two the old bound held.
+PARSED_KEEP_BYTES = 256_000_000
 #: header fields lvm_read evaluates as Python literals (``ast.literal_eval``)
 _EVALUATED = ("Channels", "Delta_X", "X0", "Samples")
 _AST_OBJECT = re.compile(r"<ast\.\w+ object at 0x[0-9a-fA-F]+>")
@@ -88,7 +96,12 @@ def _load(path: Path) -> dict[Any, Any]:
     return _parse(path, digest)
 
 
-@lru_cache(maxsize=2)
+def _nbytes(lvm: dict[Any, Any]) -> int:
+    """Bytes of a parse's arrays (its header fields are a few hundred bytes)."""
+    return sum(lvm[s]["data"].nbytes for s in range(int(lvm["Segments"])))
+
+
+@cached(LRUCache(maxsize=PARSED_KEEP_BYTES, getsizeof=_nbytes), lock=threading.Lock())
 def _parse(path: Path, digest: str) -> dict[Any, Any]:
     """lvm_read's parse of ``path``, each segment's data as a float64 array of its columns;
     ``digest`` (of the bytes) keys the cache, so a changed file is parsed again."""

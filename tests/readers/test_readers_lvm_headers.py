@@ -22,7 +22,7 @@ import pytest
 from sdt_plugins.readers.lvm_layout import printed_tolerance
 
 from sdt_framework.data.recording import DataFileError
-from sdt_framework.signals.files import read_signal
+from sdt_framework.signals.files import read_signal, scan_file
 
 from .daq_files import CORPUS, Channel, lvm_text
 
@@ -229,3 +229,30 @@ def test_a_file_rewritten_with_the_same_size_and_time_is_parsed_again(tmp_path, 
         values[k] = read_signal(file, readers, "acc")
         np.testing.assert_allclose(values[k][0], tone, atol=1e-6)  # LabVIEW's 6 decimals
     assert len(sizes) == 1  # the same size and time: only the content tells them apart
+
+
+def test_a_campaign_scanned_then_read_parses_each_file_once(tmp_path, readers, monkeypatch):
+    """A benchmark probes every file of a campaign before it reads the first. Each parse is
+    kept (by memory, not by a count of files), so each file is parsed once, and each read
+    equals the values written (LabVIEW's 6 decimals)."""
+    import lvm_read
+
+    parses: list[str] = []
+    real_read = lvm_read.read
+
+    def counting_read(filename, *args, **kwargs):
+        parses.append(Path(filename).name)
+        return real_read(filename, *args, **kwargs)
+
+    monkeypatch.setattr(lvm_read, "read", counting_read)
+    rate, tones = 1000.0, {}
+    for k in range(5):  # 5 files: more than the 2 a count-bounded cache kept
+        tones[k] = (0.1 + 0.05 * k) * np.sin(2 * np.pi * 50 * np.arange(300) / rate)
+        text = lvm_text([[Channel("acc", tones[k], 1 / rate)]])
+        (tmp_path / f"f{k}.lvm").write_text(text, encoding="utf-8")
+    files = [tmp_path / f"f{k}.lvm" for k in range(5)]
+    for file in files:
+        assert [s.variable for s in scan_file(file, readers)[1]] == ["acc"]
+    for k, file in enumerate(files):
+        np.testing.assert_allclose(read_signal(file, readers, "acc")[0], tones[k], atol=1e-6)
+    assert sorted(parses) == [f"f{k}.lvm" for k in range(5)]
