@@ -2,6 +2,8 @@
 
 - :func:`run_sdt`: ``sdt`` in a real process, as a user types it (exit status,
   stdout and stderr exactly as printed), optionally under an address-space cap.
+- :func:`sdt_here`: the same call and result through the console script's entry point
+  in this process, for the commands of a test whose subject is not the process itself.
 - :func:`six_recordings`: a manifest of six short ``.npy`` recordings, two
   classes, for tests that replace one of them with a bad file.
 - :data:`EXPLORE_BENCHMARK`: the smallest ``[benchmark]`` table a sweep file
@@ -10,16 +12,27 @@
 
 from __future__ import annotations
 
+import contextlib
+import io
 import os
 import resource
 import subprocess
 import sys
+import warnings
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 import numpy as np
+import pytest
 
-__all__ = ["EXPLORE_BENCHMARK", "MANIFEST_HEADER", "run_sdt", "six_recordings", "small_protocol"]
+__all__ = [
+    "EXPLORE_BENCHMARK",
+    "MANIFEST_HEADER",
+    "run_sdt",
+    "sdt_here",
+    "six_recordings",
+    "small_protocol",
+]
 
 MANIFEST_HEADER = "path,sampling_rate_hz,machine,condition,severity,recording_id,channel\n"
 
@@ -95,6 +108,50 @@ def run_sdt(
         timeout=timeout,
         check=False,
     )
+
+
+def _as_a_fresh_interpreter_warns() -> None:
+    """Python's default warning filters (each warning once per place; deprecations, import
+    and resource warnings ignored outside ``__main__``), shown on ``sys.stderr``."""
+    warnings.resetwarnings()
+    warnings.simplefilter("default")
+    for category in (DeprecationWarning, PendingDeprecationWarning, ImportWarning, ResourceWarning):
+        warnings.simplefilter("ignore", category)
+    warnings.showwarning = lambda message, category, filename, lineno, file=None, line=None: (
+        sys.stderr.write(warnings.formatwarning(message, category, filename, lineno, line))
+    )
+
+
+def sdt_here(
+    *args: str, env: Mapping[str, str] | None = None, site: Path | None = None
+) -> subprocess.CompletedProcess[str]:
+    """``sdt ARGS`` as :func:`run_sdt` returns it (exit status, stdout, stderr), run through the
+    console script's entry point in this process, with ``env`` set for the call.
+
+    For a test's set-up and follow-up commands (the uninterrupted run a stopped one is
+    compared with, the resume it prints): a child adds about 2.5 CPU-s of imports and checks
+    nothing more. The command a signal, a memory cap or an orphan check is sent to keeps a
+    process of its own (:func:`run_sdt`), as do runs whose worker processes must start fresh.
+    ``site``, a folder of plugin distributions, is first on the import path for the call, as
+    ``PYTHONPATH`` puts it for a child; the modules imported from it are forgotten after.
+    Python's warnings are shown on the command's stderr with a fresh interpreter's filters,
+    as a child would print them (pytest would otherwise record them out of sight).
+    """
+    out, err = io.StringIO(), io.StringIO()
+    before = set(sys.modules)
+    with pytest.MonkeyPatch.context() as patch, warnings.catch_warnings():
+        _as_a_fresh_interpreter_warns()
+        for name, value in (env or {}).items():
+            patch.setenv(name, value)
+        if site is not None:
+            patch.syspath_prepend(str(site))
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = entry_status(args, patch)
+    if site is not None:
+        for name in set(sys.modules) - before:
+            if str(getattr(sys.modules[name], "__file__", "") or "").startswith(str(site)):
+                del sys.modules[name]
+    return subprocess.CompletedProcess(["sdt", *args], code, out.getvalue(), err.getvalue())
 
 
 def six_recordings(folder: Path, file_name: str = "m.csv") -> Path:

@@ -4,6 +4,8 @@ Ctrl-C is simulated as a terminal sends it: SIGINT to the whole process group
 (the main process and its loky workers). SIGKILL gives no chance to clean up
 at all. Either way, resuming must give exactly the Macro F1 of a clean run.
 The classifier phase is detected by the first run file appearing on disk.
+Only the stopped benchmarks run in processes of their own; the clean run and the
+resumes go through sdt's entry point in the test's process.
 """
 
 from __future__ import annotations
@@ -20,6 +22,8 @@ import pandas as pd
 import pytest
 
 from sdt_framework.bench.results import RUN_COLUMNS
+
+from ..helpers import sdt_here
 
 QUICK = ["--quick", "--machines", "Motor-2", "--sensors", "adxl345", "--classifiers", "lr,mlp"]
 QUICK += ["--repeats", "4"]  # enough runs (about 2 s of fitting) to land a signal among them
@@ -63,14 +67,15 @@ def macro_f1(out) -> pd.Series:
     return results.set_index(RUN_COLUMNS)["macro_f1"].sort_index()
 
 
-def finish(command: list[str]) -> None:
-    done = subprocess.run(command, capture_output=True, text=True, check=False)
+def finish(*args: str) -> None:
+    """``sdt ARGS`` run to its end (in this process: no signal is sent to it)."""
+    done = sdt_here(*args)
     assert done.returncode == 0, done.stderr
 
 
 def test_sigint_and_sigkill_in_the_classifier_phase_then_resume(tmp_path, monkeypatch):
     monkeypatch.setenv("SDT_CACHE_DIR", str(tmp_path / "cache"))
-    finish([*SDT, "benchmark", *QUICK, "--no-report", "--jobs", "1", "--out", str(tmp_path / "c")])
+    finish("benchmark", *QUICK, "--no-report", "--jobs", "1", "--out", str(tmp_path / "c"))
     clean = macro_f1(tmp_path / "c")
 
     out = tmp_path / "ctrl-c"
@@ -81,11 +86,11 @@ def test_sigint_and_sigkill_in_the_classifier_phase_then_resume(tmp_path, monkey
     assert re.match(r"interrupted: \d+ finished runs? kept in ", line), line
     command = shlex.split(line.split("resume with: ", 1)[1])
     assert command == ["sdt", "benchmark", str(out / "config.toml"), "--out", str(out)]
-    finish([*SDT, *command[1:]])
+    finish(*command[1:])
     pd.testing.assert_series_equal(macro_f1(out), clean)
 
     out = tmp_path / "killed"
     code, _ = stop_in_classifier_phase(start(out, "--jobs", "1"), out, signal.SIGKILL)
     assert code == -signal.SIGKILL
-    finish([*SDT, "benchmark", *QUICK, "--no-report", "--out", str(out), "--jobs", "1"])  # again
+    finish("benchmark", *QUICK, "--no-report", "--out", str(out), "--jobs", "1")  # again
     pd.testing.assert_series_equal(macro_f1(out), clean)

@@ -6,6 +6,8 @@ one ``error:`` line naming the folder and the first one's process, exit 2.
 A lock left by a killed benchmark (SIGKILL: no chance to clean up) is taken
 over by the next run, which resumes. The first benchmark is frozen with
 SIGSTOP once it has claimed the folder, so the second surely meets it running.
+The first runs in a process of its own (it is stopped and killed); the second and
+the third go through sdt's entry point in the test's process.
 """
 
 from __future__ import annotations
@@ -23,7 +25,8 @@ ARGS = ["--quick", "--machines", "Motor-2", "--channels", "ch1", "--sensors", "a
 ARGS += ["--classifiers", "lr", "--no-report"]
 
 
-def test_a_second_benchmark_on_a_running_folder_is_refused(sdt, tmp_path):
+def test_a_second_benchmark_on_a_running_folder_is_refused(sdt_in_process, tmp_path):
+    sdt = sdt_in_process  # the cache in tmp_path/cache, as the first's
     out = tmp_path / "same"
     env = {**os.environ, "SDT_CACHE_DIR": str(tmp_path / "cache")}
     first = subprocess.Popen(

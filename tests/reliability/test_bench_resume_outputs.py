@@ -13,7 +13,9 @@ between any two runs.
 
 The ``slow-lr`` plugin below is the paper's logistic regression with a pause
 before each fit while ``$SDT_TEST_SLOW_FIT`` is set, so that a signal lands
-in the classifier phase; without the variable it is plain ``lr``.
+in the classifier phase; without the variable it is plain ``lr``. Only the
+commands that are stopped run in a process of their own; the uninterrupted
+runs and the resumes go through the same entry point in the test's process.
 """
 
 from __future__ import annotations
@@ -32,6 +34,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
+from ..helpers import sdt_here
 from .conftest import without_estimate
 
 PLUGIN = """
@@ -150,7 +153,12 @@ def assert_same_outputs(got: Path, want: Path, tables: list[str], texts: list[st
 
 
 def run(command: list[str], env: dict[str, str]) -> subprocess.CompletedProcess[str]:
-    done = subprocess.run(command, capture_output=True, text=True, env=env, check=False)
+    """``command`` (``[*SDT, ARGS]``) through sdt's entry point in this process, with the
+    module's cache and slow-lr's site (``env``'s ``PYTHONPATH``, first)."""
+    assert command[: len(SDT)] == SDT, command
+    site = Path(env["PYTHONPATH"].split(os.pathsep)[0])
+    cache = {"SDT_CACHE_DIR": env["SDT_CACHE_DIR"]}
+    done = sdt_here(*command[len(SDT) :], env=cache, site=site)
     assert done.returncode == 0, done.stderr
     return done
 
