@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import shutil
+
 import pandas as pd
+import pytest
 from sdt_plugins.datasets.pump_rig import rig_machines
 
 from sdt_framework.edge.cells import cell
@@ -13,9 +16,18 @@ from sdt_framework.report.load import load_results
 from sdt_framework.severity import assign_tables
 
 
-def test_decision_table_opens_the_report_with_one_row_per_candidate(results_dir, registry):
-    folder = load_results(results_dir)
-    blocks = build_blocks(folder, registry, results_dir / "figures")
+@pytest.fixture(scope="module")
+def report(results_master, registry, tmp_path_factory):
+    """(folder, loaded results, report blocks) of an intact copy of the small results folder,
+    built once: every test here reads the same blocks and none changes them."""
+    target = tmp_path_factory.mktemp("decision") / "results"
+    shutil.copytree(results_master, target, ignore=shutil.ignore_patterns("runs", "cache"))
+    folder = load_results(target)
+    return target, folder, build_blocks(folder, registry, target / "figures")
+
+
+def test_decision_table_opens_the_report_with_one_row_per_candidate(report, registry):
+    _, folder, blocks = report
     titles = [b.text for b in blocks if isinstance(b, Heading) and b.level == 2]
     assert titles[0] == "Decision table" and titles[1] == "Verdict"
     at = blocks.index(
@@ -37,9 +49,8 @@ def test_decision_table_opens_the_report_with_one_row_per_candidate(results_dir,
     assert life == f"{expected.life_years:.2f} y"
 
 
-def test_edge_budget_holds_a_node_table_per_sensor_or_says_why_not(results_dir, registry):
-    folder = load_results(results_dir)
-    blocks = build_blocks(folder, registry, results_dir / "figures")
+def test_edge_budget_holds_a_node_table_per_sensor_or_says_why_not(report):
+    _, _, blocks = report
     at = next(
         i for i, b in enumerate(blocks) if isinstance(b, Heading) and b.text.startswith("Node")
     )
@@ -59,14 +70,13 @@ def _table_after(blocks, heading: str) -> Table:
     return next(b for b in blocks[at:] if isinstance(b, Table))
 
 
-def test_decision_zone_agreement_is_the_severity_sections_figure(results_dir, registry):
+def test_decision_zone_agreement_is_the_severity_sections_figure(report):
     """The column equals the "Zone agreement" table's all-channel share, and a count by hand.
 
     The hand count pairs every adxl345 window of features.parquet with the
     reference's same window and compares zones from the zone table's cuts.
     """
-    folder = load_results(results_dir)
-    blocks = build_blocks(folder, registry, results_dir / "figures")
+    results_dir, folder, blocks = report
     header = _table_after(blocks, "Decision table").header
     decision = {
         r[0]: r[header.index("zone agreement")] for r in _table_after(blocks, "Decision table").rows
