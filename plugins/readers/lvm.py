@@ -36,13 +36,11 @@ from __future__ import annotations
 
 import hashlib
 import re
-import threading
 from collections import Counter
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-from cachetools import LRUCache, cached
 from sdt_plugins.readers.lvm_layout import (
     Channel,
     segment_channels,
@@ -55,6 +53,7 @@ from sdt_plugins.readers.lvm_layout import (
 from sdt_framework import hookimpl
 from sdt_framework.signals.errors import DataFileError
 from sdt_framework.signals.file_sizes import check_parse_size
+from sdt_framework.signals.parsed import keep_parsed
 from sdt_framework.signals.rules import (
     SignalInfo,
     finite,
@@ -75,10 +74,9 @@ _ADVICE = (
     "save the recording from LabVIEW as TDMS (Write To Measurement File, format TDMS), or "
     "split it into LVM files of at most 50 MB"
 )
-#: parsed arrays kept for the next call, bytes. A benchmark probes every file before it reads
-#: any, so the former bound of two files parsed each file of a campaign twice. The largest
-#: file's arrays take up to 200 MB (a 2-byte cell, ``0`` and its separator, as 8 bytes), so
-#: this holds at least the last file parsed and never more than the two the old bound held.
+#: parsed arrays kept for the next call, bytes (:func:`~sdt_framework.signals.parsed.keep_parsed`;
+#: the last file always). The largest file's arrays take up to 200 MB (a 2-byte cell, ``0``
+#: and its separator, as 8 bytes), so this never holds more than the two files kept before.
 PARSED_KEEP_BYTES = 256_000_000
 #: header fields lvm_read evaluates as Python literals (``ast.literal_eval``)
 _EVALUATED = ("Channels", "Delta_X", "X0", "Samples")
@@ -101,7 +99,7 @@ def _nbytes(lvm: dict[Any, Any]) -> int:
     return sum(lvm[s]["data"].nbytes for s in range(int(lvm["Segments"])))
 
 
-@cached(LRUCache(maxsize=PARSED_KEEP_BYTES, getsizeof=_nbytes), lock=threading.Lock())
+@keep_parsed(PARSED_KEEP_BYTES, _nbytes)
 def _parse(path: Path, digest: str) -> dict[Any, Any]:
     """lvm_read's parse of ``path``, each segment's data as a float64 array of its columns;
     ``digest`` (of the bytes) keys the cache, so a changed file is parsed again."""

@@ -15,12 +15,14 @@ an ordinate units label carries a note: it is read in g.
 
 pyuff reads the whole file into memory (about 4 bytes per byte of file,
 measured below), so a file over :data:`UFF_MAX_BYTES`, or one whose parse
-cannot fit in the memory available, is refused before it is read.
+cannot fit in the memory available, is refused before it is read. A parsed
+file is kept for the next call on the same version of it (its size and time),
+the most recently used files up to :data:`PARSED_KEEP_BYTES` of arrays: a
+manifest, then a benchmark's probes and reads, parse each file once in a process.
 """
 
 from __future__ import annotations
 
-import functools
 from pathlib import Path
 from typing import Any
 
@@ -29,6 +31,7 @@ import numpy as np
 from sdt_framework import hookimpl
 from sdt_framework.signals.errors import DataFileError
 from sdt_framework.signals.file_sizes import check_parse_size
+from sdt_framework.signals.parsed import keep_parsed
 from sdt_framework.signals.rules import (
     SignalInfo,
     as_acquisitions,
@@ -52,6 +55,8 @@ UFF_MAX_BYTES = 1_000_000_000
 #: peak memory of pyuff per byte of file: measured 4.0 (ASCII, 40 MB) and 3.4 (binary 58b,
 #: 44 MB) with ``/usr/bin/time -v`` (2 vCPU, Python 3.11, pyuff 2.4), rounded up
 UFF_PARSE_BYTES_PER_BYTE = 5
+#: parsed arrays kept for the next call, bytes (the last file always, however large)
+PARSED_KEEP_BYTES = 256_000_000
 #: bytes at the end of a file searched for its closing ``-1``: a line of 80 columns (HBM catman
 #: pads the ``-1`` with spaces to 80) many times over, and the trailing blanks some tools add
 TAIL_BYTES = 4096
@@ -66,7 +71,13 @@ def _ends_complete(path: Path) -> bool:
     return tail.endswith(b"-1") and tail[:-2][-1:] in (b" ", b"\n", b"\r", b"")
 
 
-@functools.lru_cache(maxsize=1)  # scan, probe and read of one file parse it once
+def _nbytes(parsed: tuple[tuple[int, ...], tuple[dict | str, ...]]) -> int:
+    """Bytes of a parse's arrays (each dataset's ``data`` and ``x``)."""
+    return sum(v.nbytes for d in parsed[1] if isinstance(d, dict) for v in d.values()
+               if isinstance(v, np.ndarray))  # fmt: skip
+
+
+@keep_parsed(PARSED_KEEP_BYTES, _nbytes)
 def _sets(path: str, mtime_ns: int, size: int) -> tuple[tuple[int, ...], tuple[dict | str, ...]]:
     """(every dataset type, the datasets 58) of a file, read once per version of it; a dataset
     pyuff cannot parse is the reason, a string."""
