@@ -140,7 +140,13 @@ class BenchmarkConfig(BaseModel):
         description="Physical units per sensor drawn from its tolerances (None: nominal only).",
     )
     seed: int = Field(default=0, ge=0, description="Base seed.")
-    jobs: int = Field(default=-1, description="Parallel processes (-1: all cores).")
+    jobs: int = Field(
+        default=-1,
+        description=(
+            "Parallel processes (-1: all cores; a local benchmark estimated under 5 s runs in "
+            "this process alone)."
+        ),
+    )
     backend: Literal["local", "dask"] = Field(default="local", description="Execution engine.")
     scheduler: str | None = Field(default=None, description="Dask scheduler address.")
     cache_dir: str | None = Field(default=None, description="Feature cache folder.")

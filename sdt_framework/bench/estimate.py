@@ -13,7 +13,10 @@ The estimate is deliberately simple (and printed as an estimate):
 - the sum is divided by the processes that compute at once: the processes
   started (:func:`~.pool.pool_size`: ``--jobs``, at most two per core and one
   per task), but no more than the cores; runs already stored in the results
-  folder are not counted;
+  folder are not counted. With the default ``--jobs`` (all cores) a local
+  benchmark whose sum is under :data:`ALONE_BELOW_SECONDS` runs in the calling
+  process alone (``Estimate.alone``): starting worker processes would take
+  longer than they save;
 - transfer pairs and node samples (``sample = "node"``) add runs: a pair's
   training set is its chains' windows, a node's its x channel's;
 - ``--units`` multiplies the runs, and the draws of a sensor with tolerances
@@ -44,31 +47,24 @@ hits are not subtracted, so the estimate errs on the long side.
 
 from __future__ import annotations
 
-import os
 from dataclasses import dataclass, replace
-from pathlib import Path
 
 from ..data.recording import Recording
 from ..features import samples_for
-from ..signals import sizes as host
-from ..signals.sizes import human_bytes
 from ..specs import SensorSpec
 from ..stages import has_tolerances
 from .plan import Plan
 from .pool import cores, pool_size
 
 __all__ = [
+    "ALONE_BELOW_SECONDS",
     "ASSUMES",
     "CONFIRM_ABOVE_SECONDS",
     "FEATURE_SECONDS_PER_MSAMPLE",
     "RUN_SECONDS",
     "Estimate",
-    "disk_problem",
     "estimate",
     "estimate_like",
-    "memory_problem",
-    "recording_problem",
-    "unfit",
 ]
 
 #: What every printed estimate rests on, said beside it (a loaded machine took 10x longer).
@@ -78,6 +74,13 @@ ASSUMES = (
 )
 #: A benchmark estimated to take longer than this needs ``--yes`` to start.
 CONFIRM_ABOVE_SECONDS = 3600.0
+#: Single-thread seconds under which the default ``--jobs`` starts no worker process. Two loky
+#: workers cost about 5 CPU-s and 2-4 s of wall time to start (each imports scipy, pandas and
+#: scikit-learn). Measured on the reference machine, ``sdt benchmark --quick --classifiers lr
+#: --no-report`` wall seconds with ``--jobs 1`` and ``--jobs 2``: estimated 2 s alone (Motor-2
+#: only): 3.9 and 5.8; 6 s: 7.9 and 9.0; 14 s (lr,rf,knn): 13.5 and 11.8; 30 s (all five):
+#: 24.8 and 17.3. Under 5 s one process wins on 2 cores (even at 9) and loses little on 16.
+ALONE_BELOW_SECONDS = 5.0
 #: Chain + features, seconds per million input samples per draw (one thread).
 FEATURE_SECONDS_PER_MSAMPLE = 0.047
 #: classifier -> (seconds per run, seconds per training window), one thread.
@@ -115,6 +118,8 @@ class Estimate:
     disk_bytes: int = 0
     #: the part of ``memory_bytes`` that does not grow with the work (processes, chains)
     fixed_bytes: int = PROCESS_BYTES
+    #: too short for worker processes to help: the default ``--jobs`` runs it in this process
+    alone: bool = False
 
     def scaled(self, count: int) -> Estimate:
         """The estimate of ``count`` times this work (the processes counted once)."""
@@ -127,6 +132,7 @@ class Estimate:
             self.fixed_bytes + (self.memory_bytes - self.fixed_bytes) * count,
             self.disk_bytes * count,
             self.fixed_bytes,
+            self.alone,
         )
 
     def after(self, stored_runs: int) -> Estimate:
@@ -138,10 +144,11 @@ class Estimate:
     def line(self) -> str:
         """One line for the terminal: size and estimated time."""
         todo = "" if self.runs_to_do == self.runs else f" ({self.runs_to_do} still to do)"
+        why = "; starting worker processes would take longer, --jobs N starts N"
         return (
             f"{self.runs} runs{todo} and {self.feature_draws} featurised signals, "
             f"estimated {format_duration(self.seconds)} on {self.workers} process"
-            f"{'es' if self.workers > 1 else ''}"
+            f"{'es' if self.workers > 1 else ''}{why if self.alone else ''}"
         )
 
 
@@ -170,11 +177,13 @@ def _draws(sensor: SensorSpec, repeats: int, units: int | None) -> int:
     return (repeats if noisy else 1) * drawn
 
 
-def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
+def estimate(plan: Plan, stored_runs: int = 0, *, alone_if_short: bool = True) -> Estimate:
     """Size, estimated wall time, peak memory and disk of ``plan``; ``stored_runs`` are done.
 
     Pure arithmetic on the plan's sizes: nothing is allocated per unit, run or
-    window, so a plan of 10^12 runs is estimated as fast as a small one.
+    window, so a plan of 10^12 runs is estimated as fast as a small one. With
+    ``alone_if_short`` (what a run does), a local plan under
+    :data:`ALONE_BELOW_SECONDS` with the default ``--jobs`` is costed in one process.
     """
     config = plan.config
     units = config.units or 1
@@ -218,6 +227,14 @@ def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
     if runs:
         run_seconds *= to_do / runs
     workers = pool_size(config.n_jobs(), max(len(plan.recordings), to_do))
+    alone = (
+        alone_if_short
+        and workers > 1
+        and config.jobs == -1
+        and config.backend == "local"
+        and feature_seconds + run_seconds < ALONE_BELOW_SECONDS
+    )
+    workers = 1 if alone else workers
     largest = max(
         (r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings), default=0
     )
@@ -227,7 +244,7 @@ def estimate(plan: Plan, stored_runs: int = 0) -> Estimate:
     memory = fixed + BLOCK_BYTES * blocks + ROW_BYTES * rows + RUN_BYTES * runs
     disk = RUN_FILE_BYTES * to_do + ROW_FILE_BYTES * rows
     seconds = (feature_seconds + run_seconds) / min(workers, cores())
-    return Estimate(runs, to_do, draws, seconds, workers, memory, disk, fixed)
+    return Estimate(runs, to_do, draws, seconds, workers, memory, disk, fixed, alone)
 
 
 def estimate_like(plan: Plan, sensor: SensorSpec, count: int) -> Estimate:
@@ -236,61 +253,4 @@ def estimate_like(plan: Plan, sensor: SensorSpec, count: int) -> Estimate:
     For a sweep whose sensors do not exist yet: its size is known from the
     number of design points before any point is built.
     """
-    return estimate(replace(plan, sensors=[sensor])).scaled(count)
-
-
-def unfit(size: Estimate, out_dir: str | os.PathLike[str] | None = None) -> str | None:
-    """Why ``size`` cannot run on this machine (memory, or disk under ``out_dir``), or None."""
-    return memory_problem(size) or (disk_problem(size, out_dir) if out_dir is not None else None)
-
-
-def memory_problem(size: Estimate) -> str | None:
-    """``needs about X of memory, more than the Y available``, or None if it fits."""
-    room = host.available_memory()  # looked up per call (tests replace it)
-    if size.memory_bytes <= room:
-        return None
-    return (
-        f"needs about {human_bytes(size.memory_bytes)} of memory, more than the "
-        f"{human_bytes(room)} available"
-    )
-
-
-def recording_problem(plan: Plan, size: Estimate) -> str | None:
-    """Why the plan's largest recording alone cannot be processed here (naming its file), or None.
-
-    When the part of the memory that no setting but the data changes (each
-    process running a chain on the largest recording) is more than is
-    available, fewer repetitions, sensors or classifiers cannot help: the
-    recording is named with its file's size, and what would.
-    """
-    room = host.available_memory()
-    if size.fixed_bytes <= room or not plan.recordings:
-        return None
-    largest = max(plan.recordings, key=lambda r: r.n_acquisitions * r.samples_per_acquisition)
-    samples = largest.n_acquisitions * largest.samples_per_acquisition
-    try:
-        on_disk = f", {human_bytes(os.stat(largest.source).st_size)}"
-    except (OSError, ValueError):  # generated data: no file
-        on_disk = ""
-    one = PROCESS_BYTES + CHAIN_BYTES_PER_SAMPLE * samples
-    fewer = ""
-    if size.workers > 1 and one <= room:
-        fewer = f", or use --jobs 1 (one process needs about {human_bytes(one)})"
-    return (
-        f"recording {largest.recording_id} ({largest.source}{on_disk}) is {samples:,} samples; "
-        f"running it through a sensor chain needs about "
-        f"{human_bytes(CHAIN_BYTES_PER_SAMPLE * samples)} of memory in each of {size.workers} "
-        f"process{'es' if size.workers > 1 else ''}, more than the {human_bytes(room)} "
-        f"available; split it into shorter recordings{fewer}"
-    )
-
-
-def disk_problem(size: Estimate, out_dir: str | os.PathLike[str]) -> str | None:
-    """``writes about X, more than the Y free on the disk of <out_dir>``, or None if it fits."""
-    free = host.free_disk(Path(out_dir))
-    if size.disk_bytes <= free:
-        return None
-    return (
-        f"writes about {human_bytes(size.disk_bytes)}, more than the {human_bytes(free)} "
-        f"free on the disk of {out_dir}"
-    )
+    return estimate(replace(plan, sensors=[sensor]), alone_if_short=False).scaled(count)

@@ -127,7 +127,8 @@ def run_plan_folder(
         if started is not None:
             started(plan, size)
         with building(f"running the {wording.what} ({size.line()})", wording.less_at_once):
-            result = runner.run_benchmark(plan, out, progress, warn)
+            workers = 1 if size.alone else None  # too short for worker processes to help
+            result = runner.run_benchmark(plan, out, progress, warn, workers=workers)
             results = write_outputs(result, out)
         run = FolderRun(out, plan, size, result, results)
         if finish is not None:

@@ -146,8 +146,13 @@ def run_benchmark(
     out_dir: str | Path,
     progress: Progress | None = None,
     warn: Warn | None = None,
+    *,
+    workers: int | None = None,
 ) -> BenchmarkResult:
     """Execute ``plan``, writing one file per finished run under ``out_dir/runs``.
+
+    ``workers``: the processes to compute in (1: this one), instead of those ``--jobs``
+    gives (the caller's estimate found the plan too short for worker processes).
 
     Runs already finished in ``out_dir`` (same key) are not redone; failed runs
     are never stored, so a resume retries them. ``warn`` receives one line per
@@ -165,14 +170,18 @@ def run_benchmark(
     """
     held = holds_results_folder(out_dir)
     try:
-        return _run(plan, out_dir, progress, warn)
+        return _run(plan, out_dir, progress, warn, workers)
     finally:
         if not held:
             unlock_results_folder(out_dir)
 
 
 def _run(
-    plan: Plan, out_dir: str | Path, progress: Progress | None, warn: Warn | None
+    plan: Plan,
+    out_dir: str | Path,
+    progress: Progress | None,
+    warn: Warn | None,
+    workers: int | None = None,
 ) -> BenchmarkResult:
     config = plan.config
     out_dir = Path(out_dir)
@@ -201,14 +210,15 @@ def _run(
     ]
     # Longest first only where processes share the work: one process ends at the same time
     # in any order, and plan order keeps its cheap runs first (what Ctrl-C leaves finished).
-    spread = config.backend == "dask" or config.n_jobs() > 1
+    workers = pool_size(config.n_jobs()) if workers is None else workers
+    spread = config.backend == "dask" or workers > 1
     if spread:
         jobs = recordings_longest_first(jobs)  # results are re-ordered by plan below
     seconds: dict[str, float] = {}
     task_seconds = {"features": 0.0, "classify": 0.0}
     sources = [r.source for r in plan.recordings]
     with open_executor(
-        config.backend, pool_size(config.n_jobs()), config.scheduler, sources, str(cache_dir)
+        config.backend, workers, config.scheduler, sources, str(cache_dir)
     ) as executor:
         start = time.perf_counter()
         blocks: list[FeatureBlock] = []

@@ -140,7 +140,9 @@ def benchmark(
     out: Path | None = typer.Option(
         None, "--out", help="Output folder (default results/<timestamp>); reuse it to resume."
     ),
-    jobs: int | None = typer.Option(None, "--jobs", help="Processes (default: all cores)."),
+    jobs: int | None = typer.Option(
+        None, "--jobs", help="Processes (default: all cores; this one alone under 5 s of work)."
+    ),
     backend: str | None = typer.Option(None, "--backend", help="local (default) or dask."),
     scheduler: str | None = typer.Option(None, "--scheduler", help="Dask scheduler address."),
     cache_dir: str | None = typer.Option(None, "--cache-dir", help="Feature cache folder."),

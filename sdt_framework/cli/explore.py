@@ -33,7 +33,9 @@ def explore(
     ),
     data: str | None = typer.Option(None, "--data", help="NLN-EMP root folder or manifest."),
     quick: bool = typer.Option(False, "--quick", help="The benchmark's quick preset."),
-    jobs: int | None = typer.Option(None, "--jobs", help="Processes (default: all cores)."),
+    jobs: int | None = typer.Option(
+        None, "--jobs", help="Processes (default: all cores; this one alone under 5 s of work)."
+    ),
     backend: str | None = typer.Option(None, "--backend", help="local (default) or dask."),
     scheduler: str | None = typer.Option(None, "--scheduler", help="Dask scheduler address."),
     out: Path | None = typer.Option(

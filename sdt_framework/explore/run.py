@@ -19,8 +19,8 @@ from typing import Any
 import pandas as pd
 
 from ..bench.config import BenchmarkConfig, quick_preset, validate_config
-from ..bench.estimate import unfit
 from ..bench.plan import Plan, plan_benchmark
+from ..bench.size_check import unfit
 from ..errors import SDTError
 from ..registry import Registry
 from ..sensor_files import load_sensor_file

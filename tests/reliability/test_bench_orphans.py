@@ -2,10 +2,11 @@
 
 On main the loky workers of a SIGKILLed benchmark computed on for minutes,
 holding the cores and memory. Each worker now watches its parent and exits
-once it is gone. The test starts a real benchmark with the default --jobs,
-waits until its workers are featurising (a feature-cache entry on disk),
-kills the main process with SIGKILL, and polls until every worker has ended
-(30 s is a generous bound: the watch looks twice a second).
+once it is gone. The test starts a real benchmark with two worker processes
+(``--jobs 2``: one this short runs in its own process by default), waits
+until its workers are featurising (a feature-cache entry on disk), kills the
+main process with SIGKILL, and polls until every worker has ended (30 s is a
+generous bound: the watch looks twice a second).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ import time
 import psutil
 import pytest
 
-ARGS = ["--quick", "--sensors", "adxl345", "--classifiers", "lr", "--no-report"]
+ARGS = ["--quick", "--sensors", "adxl345", "--classifiers", "lr", "--no-report", "--jobs", "2"]
 
 
 def _workers(main: psutil.Process) -> list[psutil.Process]:

@@ -1,4 +1,4 @@
-"""``sdt benchmark --units N`` as the README writes it, with the default worker processes.
+"""``sdt benchmark --units N`` as the README writes it, on loky and on Dask worker processes.
 
 A drawn unit adds the stages its tolerances name (the ADXL345's ``temperature.
 tempco_mg_per_c``). Those stages used to be bound by a binder that importing
@@ -7,6 +7,8 @@ the registry installs: the parent process had one, a loky or Dask worker
 the default ``--jobs`` stopped with "lists stages no registry bound". Each run
 here goes through the real command; the results must equal a ``--jobs 1`` run
 (the seeds do not depend on the process a recording is featurised in).
+The README's run is long enough for its default ``--jobs`` to start workers; cut
+short as here, it would run in its own process, so ``--jobs 2`` starts them.
 The data is cut to one machine and one channel to keep the runs short, and one
 test covers both sensors (the ADXL345, whose tempco stage was the one left
 unbound, and the README's ADXL355 at 85 °C): a separate ADXL345-only pair of runs
@@ -36,7 +38,7 @@ def _run(sdt, tmp_path, name: str, *args: str) -> pd.DataFrame:
     return _results(out)
 
 
-def test_readme_units_at_85c_with_default_jobs_and_on_dask_equal_jobs_1(sdt, tmp_path):
+def test_readme_units_at_85c_on_loky_and_on_dask_workers_equal_jobs_1(sdt, tmp_path):
     """The README's ``--units 5 ... adxl355[errors=datasheet,temp=85c]`` block (one classifier)."""
     args = (
         "--units",
@@ -46,7 +48,7 @@ def test_readme_units_at_85c_with_default_jobs_and_on_dask_equal_jobs_1(sdt, tmp
         "--classifiers",
         "lr",
     )
-    default = _run(sdt, tmp_path, "default", *args)
+    default = _run(sdt, tmp_path, "default", *args, "--jobs", "2")  # the README's workers
     single = _run(sdt, tmp_path, "jobs1", *args, "--jobs", "1")
     with LocalCluster(
         n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"

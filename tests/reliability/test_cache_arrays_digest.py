@@ -8,9 +8,10 @@ SHA-256 digest of it and its key, as the feature cache's entries do (which
 catches an entry rewritten with other samples); a changed or corrupt entry is
 named in one ``warning:`` line (not Python's raw ``cache.py:123:
 UserWarning`` with its source line), discarded and recomputed, and the
-results equal an untouched run's. Run through ``sdt benchmark`` with the
-default worker processes on a small NLN-EMP tree (CSV files, which is what
-the array cache holds).
+results equal an untouched run's. Run through ``sdt benchmark`` with two
+worker processes (``--jobs 2``: a benchmark this short runs in its own process
+by default) on a small NLN-EMP tree (CSV files, which is what the array cache
+holds): the warnings are raised in the workers.
 """
 
 from __future__ import annotations
@@ -26,7 +27,17 @@ from sdt_plugins.datasets.synthetic_pump import open_synthetic
 
 from sdt_framework.data import write_nln_emp
 
-ARGS = ("--quick", "--sensors", "adxl345", "--classifiers", "lr", "--channels", "ch1")
+ARGS = (
+    "--quick",
+    "--sensors",
+    "adxl345",
+    "--classifiers",
+    "lr",
+    "--channels",
+    "ch1",
+    "--jobs",
+    "2",
+)
 
 
 @pytest.fixture
