@@ -4,6 +4,8 @@
   stdout and stderr exactly as printed), optionally under an address-space cap.
 - :func:`sdt_here`: the same call and result through the console script's entry point
   in this process, for the commands of a test whose subject is not the process itself.
+- :func:`run_watching_loky_workers`: a command run to its end while its loky workers are
+  counted.
 - :func:`six_recordings`: a manifest of six short ``.npy`` recordings, two
   classes, for tests that replace one of them with a bad file.
 - :data:`EXPLORE_BENCHMARK`: the smallest ``[benchmark]`` table a sweep file
@@ -18,9 +20,12 @@ import os
 import resource
 import subprocess
 import sys
+import threading
+import time
 import warnings
 from collections.abc import Iterable, Mapping
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -29,6 +34,7 @@ __all__ = [
     "EXPLORE_BENCHMARK",
     "MANIFEST_HEADER",
     "run_sdt",
+    "run_watching_loky_workers",
     "sdt_here",
     "six_recordings",
     "small_protocol",
@@ -152,6 +158,46 @@ def sdt_here(
             if str(getattr(sys.modules[name], "__file__", "") or "").startswith(str(site)):
                 del sys.modules[name]
     return subprocess.CompletedProcess(["sdt", *args], code, out.getvalue(), err.getvalue())
+
+
+def _loky_workers(pid: int) -> set[int]:
+    import psutil
+
+    found = set()
+    for child in psutil.Process(pid).children(recursive=True):
+        try:
+            if "popen_loky" in " ".join(child.cmdline()):
+                found.add(child.pid)
+        except psutil.Error:
+            continue
+    return found
+
+
+def run_watching_loky_workers(
+    command: list[str], **popen: Any
+) -> tuple[subprocess.CompletedProcess[str], set[int]]:
+    """Run ``command`` (``subprocess.Popen`` options ``popen``) to its end, looking at its
+    process tree every 50 ms: (its status and output, the loky worker processes seen)."""
+    import psutil
+
+    child = subprocess.Popen(
+        command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, **popen
+    )
+    seen: set[int] = set()
+
+    def watch() -> None:
+        while child.poll() is None:
+            try:
+                seen.update(_loky_workers(child.pid))
+            except psutil.Error:
+                return
+            time.sleep(0.05)
+
+    watcher = threading.Thread(target=watch)
+    watcher.start()
+    out, err = child.communicate(timeout=600)
+    watcher.join()
+    return subprocess.CompletedProcess(command, child.returncode, out, err), seen
 
 
 def six_recordings(folder: Path, file_name: str = "m.csv") -> Path:

@@ -11,7 +11,8 @@ load_config(path, overrides), BenchmarkConfig, quick_preset(data)
     A configuration: the ``[benchmark]`` table of a TOML file (or none) under overrides.
 plan_benchmark(config, registry) -> Plan
     Everything resolved and checked, nothing run.
-run_benchmark(plan, out_dir, progress, warn) -> BenchmarkResult ; write_outputs(result, out_dir)
+run_benchmark(plan, out_dir, progress, warn, *, workers) -> BenchmarkResult
+write_outputs(result, out_dir)
     The run and the output files on their own (what ``run_plan_folder`` calls).
 check_size(plan, out_dir, yes, what, reduce) -> Estimate ; check_estimate ; stored_runs
     A plan's size (runs, time, memory, disk; the module ``bench.estimate``

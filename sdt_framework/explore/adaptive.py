@@ -135,7 +135,8 @@ def estimates(
     screen = screen_plan(explore, registry).plan
     first, refine = adaptive_estimate(screen, explore.plan, explore.base, points, rounds, report)
     total = first.seconds + refine.seconds
-    workers = f"{first.workers} process{'es' if first.workers > 1 else ''}"
+    most = max(first.workers, refine.workers)  # a screen too short for workers runs alone
+    workers = f"{most} process{'es' if most > 1 else ''}"
     lines.append(
         f"adaptive: screen of {n} points ({' and '.join(SCREEN_CLASSIFIERS)}, 1 repetition) "
         f"{format_duration(first.seconds)} + full protocol on at most {points} points in at "

@@ -28,8 +28,9 @@ from sdt_framework.bench import load_config, run_benchmark_folder, tidy
 from sdt_framework.registry import build_registry
 
 
-def lr_on_seed0(where: Path, **options):
-    """(results, per_class) of the reference chain with LR, seed 0, one repetition."""
+def lr_on_seed0(where: Path, cache: Path | None = None, **options):
+    """(results, per_class) of the reference chain with LR, seed 0, one repetition; the
+    feature cache under ``cache`` (default: ``where``)."""
     config = load_config(
         None,
         {
@@ -38,7 +39,7 @@ def lr_on_seed0(where: Path, **options):
             "repeats": 1,
             "jobs": 1,
             "report": False,
-            "cache_dir": str(where / "cache"),
+            "cache_dir": str((cache or where) / "cache"),
             "dataset_options": {"seed": 0},
             **options,
         },
@@ -49,14 +50,22 @@ def lr_on_seed0(where: Path, **options):
 
 
 @pytest.fixture(scope="module")
-def reference_chain(tmp_path_factory: pytest.TempPathFactory):
-    return lr_on_seed0(tmp_path_factory.mktemp("calibration"))
+def calibration(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The module's folder: both benchmarks share its feature cache (the pump channels'
+    features are the reference run's, looked up by content)."""
+    return tmp_path_factory.mktemp("calibration")
 
 
 @pytest.fixture(scope="module")
-def pump_channels(tmp_path_factory: pytest.TempPathFactory):
-    where = tmp_path_factory.mktemp("pump_channels")
-    return lr_on_seed0(where, machines=["Motor-4"], channels=["ch4", "ch5"])
+def reference_chain(calibration: Path):
+    return lr_on_seed0(calibration)
+
+
+@pytest.fixture(scope="module")
+def pump_channels(calibration: Path, reference_chain):
+    where = calibration / "pump_channels"
+    where.mkdir()
+    return lr_on_seed0(where, machines=["Motor-4"], channels=["ch4", "ch5"], cache=calibration)
 
 
 def test_cavitation_classes_are_recognised_on_the_pump_channels(pump_channels) -> None:

@@ -9,58 +9,25 @@ and the estimate counts the processes started (their memory included).
 from __future__ import annotations
 
 import os
-import subprocess
 import sys
-import threading
-import time
-
-import psutil
 
 from sdt_framework.bench.config import load_config
 from sdt_framework.bench.estimate import PROCESS_BYTES, estimate
 from sdt_framework.bench.plan import plan_benchmark
 
+from ..helpers import run_watching_loky_workers
+
 ARGS = ["--quick", "--machines", "Motor-2", "--channels", "ch1", "--sensors", "wilcoxon-786b10"]
 ARGS += ["--classifiers", "lr", "--no-report"]
-
-
-def _loky_workers(pid: int) -> set[int]:
-    found = set()
-    for child in psutil.Process(pid).children(recursive=True):
-        try:
-            if "popen_loky" in " ".join(child.cmdline()):
-                found.add(child.pid)
-        except psutil.Error:
-            continue
-    return found
 
 
 def test_jobs_far_above_one_core_start_two_workers(tmp_path):
     """On one core (the command pinned to CPU 0), ``--jobs 12`` starts 2 loky workers."""
     command = [sys.executable, "-m", "sdt_framework", "benchmark", *ARGS, "--jobs", "12"]
     command += ["--out", str(tmp_path / "out"), "--cache-dir", str(tmp_path / "cache")]
-    child = subprocess.Popen(
-        command,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-        preexec_fn=lambda: os.sched_setaffinity(0, {0}),
-    )
-    seen: set[int] = set()
-
-    def watch() -> None:
-        while child.poll() is None:
-            try:
-                seen.update(_loky_workers(child.pid))
-            except psutil.Error:
-                return
-            time.sleep(0.05)
-
-    watcher = threading.Thread(target=watch)
-    watcher.start()
-    _, err = child.communicate(timeout=600)
-    watcher.join()
-    assert child.returncode == 0, err
+    done, seen = run_watching_loky_workers(command, preexec_fn=lambda: os.sched_setaffinity(0, {0}))
+    err = done.stderr
+    assert done.returncode == 0, err
     assert 1 <= len(seen) <= 2, f"{len(seen)} loky workers started"
     notes = [line for line in err.splitlines() if line.startswith("note:")]
     # 15 recordings, 6 runs: 15 tasks at most at once; 1 core: 2 processes

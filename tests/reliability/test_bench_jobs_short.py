@@ -11,19 +11,15 @@ its default, and its estimate says so and how to start them; a longer one, an ex
 from __future__ import annotations
 
 import os
-import subprocess
 import sys
-import threading
-import time
 
 import pandas as pd
-import psutil
 
 from sdt_framework.bench.config import load_config
 from sdt_framework.bench.estimate import ALONE_BELOW_SECONDS, PROCESS_BYTES, estimate, estimate_like
 from sdt_framework.bench.plan import plan_benchmark
 
-from ..helpers import sdt_here
+from ..helpers import run_watching_loky_workers, sdt_here
 
 TINY = {"quick": True, "machines": ["Motor-2"], "channels": ["ch1"], "classifiers": ["lr"]}
 ARGS = ["--quick", "--machines", "Motor-2", "--channels", "ch1", "--classifiers", "lr"]
@@ -58,45 +54,18 @@ def test_a_benchmark_over_the_bound_keeps_its_workers(registry, monkeypatch):
     assert (longer.alone, longer.workers) == (False, 2)
 
 
-def _loky_workers(pid: int) -> set[int]:
-    found = set()
-    for child in psutil.Process(pid).children(recursive=True):
-        try:
-            if "popen_loky" in " ".join(child.cmdline()):
-                found.add(child.pid)
-        except psutil.Error:
-            continue
-    return found
-
-
 def test_sdt_benchmark_starts_no_worker_for_it_and_gives_the_workers_results(tmp_path):
     """A real ``sdt benchmark`` (two cores allowed, the default ``--jobs``) starts no loky
     worker; its results equal those of ``--jobs 2``, which does start them."""
     out = tmp_path / "alone"
     command = [sys.executable, "-m", "sdt_framework", "benchmark", *ARGS, "--out", str(out)]
-    child = subprocess.Popen(
+    done, seen = run_watching_loky_workers(
         command,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
         env={**os.environ, "SDT_CACHE_DIR": str(tmp_path / "cache")},
         preexec_fn=lambda: os.sched_setaffinity(0, {0, 1}),
     )
-    seen: set[int] = set()
-
-    def watch() -> None:
-        while child.poll() is None:
-            try:
-                seen.update(_loky_workers(child.pid))
-            except psutil.Error:
-                return
-            time.sleep(0.05)
-
-    watcher = threading.Thread(target=watch)
-    watcher.start()
-    _, err = child.communicate(timeout=600)
-    watcher.join()
-    assert child.returncode == 0, err
+    err = done.stderr
+    assert done.returncode == 0, err
     assert not seen, f"{len(seen)} loky workers started"
     assert "on 1 process; starting worker processes would take longer" in err
     env = {"SDT_CACHE_DIR": str(tmp_path / "cache-2")}

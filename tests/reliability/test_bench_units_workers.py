@@ -20,6 +20,8 @@ from __future__ import annotations
 import pandas as pd
 from distributed import LocalCluster
 
+from ..helpers import sdt_here
+
 CUT = ("--machines", "Motor-2", "--channels", "ch1")
 
 
@@ -33,13 +35,24 @@ def _results(folder) -> pd.DataFrame:
 def _run(sdt, tmp_path, name: str, *args: str) -> pd.DataFrame:
     out = tmp_path / name
     done = sdt("benchmark", "--quick", *args, *CUT, "--no-report", "--out", str(out))
+    return _checked(done, out)
+
+
+def _checked(done, out) -> pd.DataFrame:
     assert done.returncode == 0, done.stderr
     assert "no registry bound" not in done.stderr
     return _results(out)
 
 
 def test_readme_units_at_85c_on_loky_and_on_dask_workers_equal_jobs_1(sdt, tmp_path):
-    """The README's ``--units 5 ... adxl355[errors=datasheet,temp=85c]`` block (one classifier)."""
+    """The README's ``--units 5 ... adxl355[errors=datasheet,temp=85c]`` block (one classifier).
+
+    The loky run is a real process: workers an earlier test started in this one would have
+    imported the registry already, which is what hid the unbound stages."""
+
+    def here(*args: str):
+        return sdt_here(*args, env={"SDT_CACHE_DIR": str(tmp_path / "cache")})
+
     args = (
         "--units",
         "5",
@@ -49,12 +62,14 @@ def test_readme_units_at_85c_on_loky_and_on_dask_workers_equal_jobs_1(sdt, tmp_p
         "lr",
     )
     default = _run(sdt, tmp_path, "default", *args, "--jobs", "2")  # the README's workers
-    single = _run(sdt, tmp_path, "jobs1", *args, "--jobs", "1")
+    # the command itself may run in this process where its workers start fresh anyway: the
+    # --jobs 1 reference, and the Dask run (this test's own new cluster does the work)
+    single = _run(here, tmp_path, "jobs1", *args, "--jobs", "1")
     with LocalCluster(
         n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0"
     ) as cluster:
         on_dask = ("--backend", "dask", "--scheduler", cluster.scheduler_address)
-        dask = _run(sdt, tmp_path, "dask", *args, *on_dask)
+        dask = _run(here, tmp_path, "dask", *args, *on_dask)
     # 3 scenarios x 2 sensors x 5 units x 2 repeats, every run scored, units really differ
     assert len(default) == 3 * 2 * 5 * 2 and (default["status"] == "ok").all()
     assert default["sensor"].nunique() == 2
