@@ -76,10 +76,11 @@ ASSUMES = (
 CONFIRM_ABOVE_SECONDS = 3600.0
 #: Single-thread seconds under which the default ``--jobs`` starts no worker process. Two loky
 #: workers cost about 5 CPU-s and 2-4 s of wall time to start (each imports scipy, pandas and
-#: scikit-learn). Measured on the reference machine, ``sdt benchmark --quick --classifiers lr
-#: --no-report`` wall seconds with ``--jobs 1`` and ``--jobs 2``: estimated 2 s alone (Motor-2
-#: only): 3.9 and 5.8; 6 s: 7.9 and 9.0; 14 s (lr,rf,knn): 13.5 and 11.8; 30 s (all five):
-#: 24.8 and 17.3. Under 5 s one process wins on 2 cores (even at 9) and loses little on 16.
+#: scikit-learn). Wall seconds of ``sdt benchmark --quick ... --no-report`` with ``--jobs 1``
+#: vs ``--jobs 2`` on the reference machine, by single-thread estimate: ``--machines Motor-2
+#: --classifiers lr`` 2 s: 3.9 vs 5.8; ``--classifiers lr`` 6 s: 7.9 vs 9.0; ``--classifiers
+#: lr,rf,knn`` 14 s: 13.5 vs 11.8; all five classifiers 30 s: 24.8 vs 17.3. Under 5 s one
+#: process wins on 2 cores (the break-even is near 9 s) and loses about 2 s at most on many.
 ALONE_BELOW_SECONDS = 5.0
 #: Chain + features, seconds per million input samples per draw (one thread).
 FEATURE_SECONDS_PER_MSAMPLE = 0.047
