@@ -41,7 +41,7 @@ from sdt_plugins.sensors import wilcoxon_786b10 as builtin_reference
 from sdt_framework import build_registry
 from sdt_framework.specs import SensorSpec
 
-from .helpers import entry_status
+from .helpers import sdt_here
 
 FakeDist = Callable[..., Path]
 CATALOG_MISSING = "the sensor catalogue is not installed: pip install -e plugins/sensors-catalog"
@@ -127,20 +127,16 @@ def fake_dist(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[FakeD
 
 
 @pytest.fixture
-def sdt_in_process(monkeypatch, capsys, tmp_path):
+def sdt_in_process(tmp_path):
     """``sdt(*args, env=...)`` as the reliability tests' ``sdt`` fixture gives it (a
     ``CompletedProcess``: exit status, stdout, stderr; the cache in the test's folder), but
-    in this process: for commands that end before any worker starts (a bad input refused,
+    in this process (:func:`~tests.helpers.sdt_here`: Python's warnings on its stderr, as a
+    child prints them): for commands that end before any worker starts (a bad input refused,
     a file inspected or checked), where a real process adds two seconds of imports and
     checks nothing more. Signals, memory caps, orphans and workers keep ``run_sdt``."""
 
     def run(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
-        with monkeypatch.context() as patch:
-            for name, value in {"SDT_CACHE_DIR": str(tmp_path / "cache"), **(env or {})}.items():
-                patch.setenv(name, value)
-            capsys.readouterr()  # what the test printed before is not the command's
-            code, out, err = _sdt_here(args, patch, capsys)
-        return subprocess.CompletedProcess(["sdt", *args], code, out, err)
+        return sdt_here(*args, env={"SDT_CACHE_DIR": str(tmp_path / "cache"), **(env or {})})
 
     return run
 
@@ -157,18 +153,16 @@ def readers(registry):
     return registry.signal_readers()
 
 
-def _sdt_here(args: tuple[str, ...], monkeypatch, capsys) -> tuple[int, str, str]:
-    """``sdt ARGS`` through the console script's entry point in this process:
-    (exit status, stdout, stderr), the status as the interpreter would exit with it."""
-    code = entry_status(args, monkeypatch)
-    out = capsys.readouterr()
-    return code, out.out, out.err
+def _sdt_main(*args: str) -> tuple[int, str, str]:
+    done = sdt_here(*args)
+    return done.returncode, done.stdout, done.stderr
 
 
 @pytest.fixture
-def sdt_main(monkeypatch, capsys):
-    """``sdt_main(*args)``: ``sdt`` in this process: (exit status, stdout, stderr)."""
-    return lambda *args: _sdt_here(args, monkeypatch, capsys)
+def sdt_main():
+    """``sdt_main(*args)``: ``sdt`` in this process (:func:`~tests.helpers.sdt_here`, in the
+    environment the test set): (exit status, stdout, stderr)."""
+    return _sdt_main
 
 
 #: the built-in profiles of paper Table 1, as their plugins register them (not copies that
