@@ -26,7 +26,10 @@ The estimate is deliberately simple (and printed as an estimate):
   the results are written, plus each process's chain run on the largest
   recording, plus each worker process started on this machine (``PROCESS_BYTES``
   each: 268 and 271 MB peak for the two loky workers of the run below with
-  ``--jobs 2``); disk: one run file per run and ``features.parquet``.
+  ``--jobs 2``), plus the samples the dataset keeps between reads in each process
+  that reads (``Dataset.kept_bytes``, the dataset's samples at most: the synthetic
+  pump keeps up to 64 MB of runs, which raised the peak of the ``--units 2`` run
+  below from 270 to 314 MB); disk: one run file per run and ``features.parquet``.
 
 The memory constants are peak resident sizes measured with ``/usr/bin/time -v``
 on ``sdt benchmark --quick --machines Motor-2 --classifiers lr --jobs 1`` with
@@ -241,7 +244,11 @@ def estimate(plan: Plan, stored_runs: int = 0, *, alone_if_short: bool = True) -
     )
     remote = config.backend == "dask" and config.scheduler  # the workers are elsewhere
     here = 0 if remote or workers == 1 else workers  # worker processes on this machine
-    fixed = PROCESS_BYTES * (1 + here) + workers * CHAIN_BYTES_PER_SAMPLE * largest
+    # samples the dataset keeps between reads, in each process that reads (a small
+    # dataset's whole samples at most)
+    samples = sum(r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings)
+    kept = min(plan.dataset.kept_bytes, 8 * samples) * (1 if workers == 1 else here)
+    fixed = PROCESS_BYTES * (1 + here) + workers * CHAIN_BYTES_PER_SAMPLE * largest + kept
     memory = fixed + BLOCK_BYTES * blocks + ROW_BYTES * rows + RUN_BYTES * runs
     disk = RUN_FILE_BYTES * to_do + ROW_FILE_BYTES * rows
     seconds = (feature_seconds + run_seconds) / min(workers, cores())

@@ -108,6 +108,7 @@ def synth(
             dataset.acquisitions,
             dataset.duration,
             recordings[0].sampling_rate_hz,  # the generator's rate, as its recordings give it
+            dataset.kept_bytes,
         )
         check_output_folder(out, "--out")
         check_cost("dataset synth", cost, yes, "--duration or --acquisitions", folder=out)

@@ -157,6 +157,10 @@ class Dataset:
     by the name its recordings give: what severity and the report read.
     """
 
+    #: samples a dataset may keep in a process between reads (a cache), bytes: memory
+    #: estimates count it beside the recording being read
+    kept_bytes: int = 0
+
     def __init__(
         self,
         name: str,

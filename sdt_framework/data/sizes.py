@@ -30,16 +30,22 @@ SYNTH_SAMPLES_PER_S = 1.5e6
 
 
 def synth_cost(
-    n_recordings: int, channels: int, acquisitions: int, duration_s: float, fs_hz: float
+    n_recordings: int,
+    channels: int,
+    acquisitions: int,
+    duration_s: float,
+    fs_hz: float,
+    kept_bytes: int = 0,
 ) -> Cost:
     """Cost of writing ``n_recordings`` synthetic recordings as NLN-EMP CSVs.
 
-    Memory is the peak of one run (``channels`` recordings generated together);
+    Memory is the peak of one run (``channels`` recordings generated together) plus
+    the runs the dataset keeps for the next read (``kept_bytes``, every sample at most);
     disk is every CSV; time is every sample generated and written.
     """
     rows = round(duration_s * fs_hz)
     per_recording = rows * acquisitions
     samples = n_recordings * per_recording
-    memory = channels * per_recording * SYNTH_RUN_BYTES_PER_SAMPLE
+    memory = channels * per_recording * SYNTH_RUN_BYTES_PER_SAMPLE + min(kept_bytes, 8 * samples)
     disk = n_recordings * rows * (CSV_BYTES_PER_ROW + CSV_BYTES_PER_VALUE * acquisitions)
     return Cost(samples, memory, samples / SYNTH_SAMPLES_PER_S, disk)

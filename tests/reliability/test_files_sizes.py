@@ -96,6 +96,24 @@ def test_synth_memory_estimate_bounds_the_measured_peak() -> None:
     assert peak < estimate < 3 * peak, (peak, estimate)
 
 
+def test_synth_memory_estimate_bounds_the_peak_of_writing_kept_runs_included(tmp_path) -> None:
+    """Writing reads every run through the dataset, which keeps the runs it generated
+    (4.8 MB here, all of them): the estimate counts them beside the run being made. The
+    seed is this test's own, so no run is kept already from another test."""
+    from sdt_framework.data.sizes import synth_cost
+
+    dataset = open_synthetic(duration=0.5, machines="Motor-2", seed=20261129)
+    n = len(dataset.recordings())
+    tracemalloc.start()
+    write_nln_emp(dataset, tmp_path)
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    estimate = synth_cost(n, 5, 1, 0.5, FS_HZ, dataset.kept_bytes).memory_bytes
+    kept = 8 * n * round(0.5 * FS_HZ)
+    assert peak > kept  # the kept runs are in the peak
+    assert peak < estimate < 3 * peak, (peak, estimate)
+
+
 @pytest.mark.parametrize("sensor", ["adxl345", "adxl357", "wilcoxon-786b10"])
 def test_noise_memory_estimate_bounds_the_measured_peak(sensor: str) -> None:
     from sdt_framework.validation.noise_check import zero_motion_cost

@@ -2,9 +2,10 @@
 
 Metadata is known without generating anything; ``Recording.load()`` generates
 its run (all selected channels at once, since channels share their sources)
-and keeps only the most recent run in memory, so loading channels of a run in
-sequence generates it once and memory stays bounded by one run
-(5 channels x acquisitions x duration x 20 kHz x 8 bytes). Every recording's
+and keeps it for the process (:mod:`.kept`: up to 64 MB of runs, or the one run
+being read where it is larger), so loading the channels of a run generates it once,
+in a worker as in the main process, and a second benchmark over the same runs
+generates none. Every recording's
 ``source`` names the generator's fingerprint (a hash of its two modules), so
 features cached from an older generator are never served for a newer one.
 """
@@ -28,6 +29,7 @@ from sdt_framework.machine_files import spec_at_speeds
 from . import model as m
 from . import speeds as sp
 from .generate import FS_HZ, generate_run
+from .kept import KEEP_BYTES, kept_run
 
 __all__ = ["DEFAULTS", "GENERATOR", "SyntheticPump", "open_synthetic"]
 
@@ -63,6 +65,8 @@ def _select(value: str | Iterable[str] | None, known: Iterable[str], what: str) 
 class SyntheticPump(Dataset):
     """Generated NLN-EMP-like recordings (see :func:`open_synthetic`)."""
 
+    kept_bytes = KEEP_BYTES
+
     def __init__(
         self,
         *,
@@ -81,7 +85,6 @@ class SyntheticPump(Dataset):
         if layout == "real":
             self._columns = dict(REAL_LAYOUT)
         self.channels = tuple(channels)
-        self._last: tuple[tuple[str, str, str], dict[str, np.ndarray]] | None = None
         recordings = []
         names = [machine.name for machine in machines]
         for machine in machines:
@@ -131,24 +134,19 @@ class SyntheticPump(Dataset):
     def _generate(
         self, speed: str, machine: str, condition: str, level: int, channel: str
     ) -> np.ndarray:
-        key = (speed, machine, f"{condition} {level}")
-        if self._last is None or self._last[0] != key:
-            self._last = None  # free the previous run before generating the next
-            self._last = (
-                key,
-                generate_run(
-                    machine,
-                    condition,
-                    level,
-                    channels=self.channels,
-                    acquisitions=self._columns["healthy" if condition == "healthy" else "fault"],
-                    duration_s=self.duration,
-                    seed=self.seed,
-                    glitches=self.glitches,
-                    speed=float(speed),
-                ),
-            )
-        return self._last[1][channel]
+        columns = self._columns["healthy" if condition == "healthy" else "fault"]
+        options = dict(
+            channels=self.channels,
+            acquisitions=columns,
+            duration_s=self.duration,
+            seed=self.seed,
+            glitches=self.glitches,
+            speed=float(speed),
+        )
+        key = (machine, condition, level, *sorted(options.items()))
+        nbytes = len(self.channels) * columns * round(self.duration * FS_HZ) * 8
+        run = kept_run(key, nbytes, lambda: generate_run(machine, condition, level, **options))
+        return run[channel]
 
 
 def _specs(machines: list[m.Machine]) -> tuple[dict, list[str]]:
