@@ -64,18 +64,20 @@ def pytest_configure(config: pytest.Config) -> None:
 
 
 def _one_blas_thread() -> None:
-    """One BLAS thread in this process and in the commands it starts, unless the user set one.
+    """One BLAS and one OpenMP thread here and in the commands it starts, unless the user set one.
 
     The suite runs one pytest-xdist worker per core (``make test``); each worker's
     OpenBLAS would start a thread per core as well, and on small matrices those
     threads spin against the other worker's: SALib's delta analysis (a Gaussian KDE
     per bootstrap sample) took 14.6 s with two threads on the loaded 2-core machine
-    and 1.4 s with one. Only the BLAS pool is limited (a result can differ from a
-    multi-thread run's in rounding only).
+    and 1.4 s with one. OpenMP (scikit-learn's and XGBoost's libgomp, loaded later,
+    which reads ``OMP_NUM_THREADS`` when it starts) spins the same way: the
+    conformance check's XGBoost fit took 9.2 s with two threads in the loaded suite
+    and 0.05 s alone. A result can differ from a multi-thread run's in rounding only.
     """
     from threadpoolctl import threadpool_limits
 
-    for name in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
+    for name in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS"):
         os.environ.setdefault(name, "1")
     threadpool_limits(limits=int(os.environ["OPENBLAS_NUM_THREADS"]), user_api="blas")
 

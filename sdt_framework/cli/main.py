@@ -7,10 +7,13 @@ each under the name the user types; adding one is adding its line here.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable
 from pathlib import Path
 
+import click
 import typer
+import typer.main
 
 from . import classifiers, features, plugins, sensors, twin
 from . import dataset as dataset_cli
@@ -82,7 +85,18 @@ def root(
     ctx.obj["sensor_files"] = sensor_file
 
 
+@functools.cache
+def command() -> click.Command:
+    """The click command Typer builds from :data:`app`, built once per process.
+
+    ``app()`` builds it again at every call (about 20 ms: every option of every
+    command read from its function's signature); a process that runs several
+    commands (a notebook, the test suite) pays it once.
+    """
+    return typer.main.get_command(app)
+
+
 def main() -> None:
     """Run ``sdt``; a user or environment error prints one line and exits with status 2,
     a bug with 70, Ctrl-C with 130 (see :mod:`sdt_framework.cli.failures`)."""
-    run(app)
+    run(command())
