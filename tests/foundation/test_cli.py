@@ -117,3 +117,28 @@ def test_every_command_has_help_with_an_example(path):
     result = runner.invoke(app, [*path, "--help"], env={"COLUMNS": "200"})
     assert result.exit_code == 0
     assert "Example" in result.stdout, f"`sdt {' '.join(path)} --help` shows no example"
+
+
+def test_a_process_builds_the_command_once_and_each_run_parses_afresh(monkeypatch):
+    """``main()`` reuses the click command Typer built (not ``app()``, which builds it at
+    every call); a run's options never leak into the next one."""
+    import typer.main
+
+    from sdt_framework.cli import main as cli
+
+    from ..helpers import sdt_here
+
+    built = []
+    real = typer.main.get_command
+    monkeypatch.setattr(typer.main, "get_command", lambda app: built.append(app) or real(app))
+    cli.command.cache_clear()
+    try:
+        cheap = sdt_here("sensors", "list", "--max-price", "15EUR")
+        everything = sdt_here("sensors", "list")
+        again = sdt_here("sensors", "list", "--max-price", "15EUR")
+    finally:
+        cli.command.cache_clear()
+    assert built == [app]
+    assert cheap.returncode == everything.returncode == again.returncode == 0
+    assert cheap.stdout == again.stdout
+    assert len(everything.stdout.splitlines()) > len(cheap.stdout.splitlines())
