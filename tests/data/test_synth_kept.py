@@ -11,6 +11,8 @@ from sdt_plugins.datasets.synthetic_pump import dataset as synthetic
 from sdt_plugins.datasets.synthetic_pump import kept
 from sdt_plugins.datasets.synthetic_pump.generate import generate_run
 
+from sdt_framework.signals.parsed import Kept
+
 
 @pytest.fixture
 def calls(monkeypatch) -> list[tuple]:
@@ -22,7 +24,8 @@ def calls(monkeypatch) -> list[tuple]:
         return generate_run(machine, condition, level, **options)
 
     monkeypatch.setattr(synthetic, "generate_run", counting)
-    monkeypatch.setattr(kept, "_kept", type(kept._kept)())
+    runs = Kept(kept.KEEP_BYTES, lambda run: sum(x.nbytes for x in run.values()))
+    monkeypatch.setattr(kept, "RUNS", runs)
     return made
 
 
@@ -60,18 +63,18 @@ def test_the_kept_runs_stay_within_the_budget_and_the_last_is_kept_whatever_its_
     calls, monkeypatch
 ) -> None:
     run_bytes = 5 * round(0.25 * synthetic.FS_HZ) * 8  # 5 channels, one acquisition
-    monkeypatch.setattr(kept, "KEEP_BYTES", 3 * run_bytes)
+    monkeypatch.setattr(kept.RUNS, "keep_bytes", 3 * run_bytes)
     recordings = _open().recordings()
     for r in recordings:
         r.load()
-        assert kept._held() <= 3 * run_bytes
-    assert len(kept._kept) == 3
+        assert kept.RUNS.held <= 3 * run_bytes
+    assert len(kept.RUNS) == 3
     recordings[-1].load()  # the most recent: kept
     assert len(calls) == 15
     recordings[0].load()  # the first: long gone
     assert len(calls) == 16
-    monkeypatch.setattr(kept, "KEEP_BYTES", run_bytes // 2)
+    monkeypatch.setattr(kept.RUNS, "keep_bytes", run_bytes // 2)
     recordings[30].load()  # over the budget alone: kept, on its own
-    assert len(kept._kept) == 1 and len(calls) == 17
+    assert len(kept.RUNS) == 1 and len(calls) == 17
     recordings[31].load()  # the same run's next channel
     assert len(calls) == 17

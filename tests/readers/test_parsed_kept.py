@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from sdt_framework.signals.parsed import keep_parsed
+from sdt_framework.signals.parsed import Kept, keep_parsed
 
 
 def _counted(keep_bytes: int):
@@ -54,6 +54,27 @@ def test_a_failed_parse_is_not_kept():
         with pytest.raises(ValueError, match="damaged"):
             parse("bad", -1)
     assert calls == [("bad", -1), ("bad", -1)]
+
+
+def test_a_size_known_beforehand_makes_room_before_the_value_is_made():
+    """The kept values and the one being made never hold more than the bound together."""
+    kept: Kept[np.ndarray] = Kept(8 * 250, lambda array: array.nbytes)
+    held_while_making: list[int] = []
+
+    def make(n: int):
+        def run() -> np.ndarray:
+            held_while_making.append(kept.held)
+            return np.zeros(n)
+
+        return run
+
+    for key in ("a", "b", "c"):  # 100 values each: a goes before c is made
+        kept.get(key, make(100), size=800)
+    assert held_while_making == [0, 800, 800]
+    assert len(kept) == 2 and kept.held == 1600
+    big = kept.get("big", make(1000), size=8000)  # over the bound alone: made alone, kept
+    assert held_while_making[-1] == 0 and len(kept) == 1
+    assert kept.get("big", make(1000), size=8000) is big
 
 
 def test_a_uff_campaign_scanned_then_read_parses_each_file_once(tmp_path, readers, monkeypatch):
