@@ -247,7 +247,7 @@ def estimate(plan: Plan, stored_runs: int = 0, *, alone_if_short: bool = True) -
     # samples the dataset keeps between reads, in each process that reads (a small
     # dataset's whole samples at most)
     samples = sum(r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings)
-    kept = min(plan.dataset.kept_bytes, 8 * samples) * (1 if workers == 1 else here)
+    kept = plan.dataset.kept_at_most(samples) * (1 if workers == 1 else here)
     fixed = PROCESS_BYTES * (1 + here) + workers * CHAIN_BYTES_PER_SAMPLE * largest + kept
     memory = fixed + BLOCK_BYTES * blocks + ROW_BYTES * rows + RUN_BYTES * runs
     disk = RUN_FILE_BYTES * to_do + ROW_FILE_BYTES * rows

@@ -158,8 +158,13 @@ class Dataset:
     """
 
     #: samples a dataset may keep in a process between reads (a cache), bytes: memory
-    #: estimates count it beside the recording being read
+    #: estimates count it beside the recording being read (:meth:`kept_at_most`)
     kept_bytes: int = 0
+
+    def kept_at_most(self, samples: int) -> int:
+        """Bytes this dataset keeps in a process between reads of recordings that hold
+        ``samples`` float64 samples in all: :attr:`kept_bytes`, or all of them where fewer."""
+        return min(self.kept_bytes, 8 * samples)
 
     def __init__(
         self,

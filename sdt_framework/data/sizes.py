@@ -40,12 +40,12 @@ def synth_cost(
     """Cost of writing ``n_recordings`` synthetic recordings as NLN-EMP CSVs.
 
     Memory is the peak of one run (``channels`` recordings generated together) plus
-    the runs the dataset keeps for the next read (``kept_bytes``, every sample at most);
+    the runs the dataset keeps for the next read (``kept_bytes``: ``Dataset.kept_at_most``);
     disk is every CSV; time is every sample generated and written.
     """
     rows = round(duration_s * fs_hz)
     per_recording = rows * acquisitions
     samples = n_recordings * per_recording
-    memory = channels * per_recording * SYNTH_RUN_BYTES_PER_SAMPLE + min(kept_bytes, 8 * samples)
+    memory = channels * per_recording * SYNTH_RUN_BYTES_PER_SAMPLE + kept_bytes
     disk = n_recordings * rows * (CSV_BYTES_PER_ROW + CSV_BYTES_PER_VALUE * acquisitions)
     return Cost(samples, memory, samples / SYNTH_SAMPLES_PER_S, disk)

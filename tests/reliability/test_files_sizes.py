@@ -108,8 +108,9 @@ def test_synth_memory_estimate_bounds_the_peak_of_writing_kept_runs_included(tmp
     write_nln_emp(dataset, tmp_path)
     peak = tracemalloc.get_traced_memory()[1]
     tracemalloc.stop()
-    estimate = synth_cost(n, 5, 1, 0.5, FS_HZ, dataset.kept_bytes).memory_bytes
     kept = 8 * n * round(0.5 * FS_HZ)
+    assert dataset.kept_at_most(n * round(0.5 * FS_HZ)) == kept  # under its 64 MB
+    estimate = synth_cost(n, 5, 1, 0.5, FS_HZ, kept).memory_bytes
     assert peak > kept  # the kept runs are in the peak
     assert peak < estimate < 3 * peak, (peak, estimate)
 
