@@ -13,15 +13,15 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 from distributed import LocalCluster
-from threadpoolctl import threadpool_limits
+from threadpoolctl import threadpool_info, threadpool_limits
 
 from sdt_framework import build_registry
 from sdt_framework.bench.classify import fit_predict
 from sdt_framework.bench.results import tidy
 from sdt_framework.bench.runner import plan_benchmark, run_benchmark
 
-#: A classifier that reports the BLAS threads its fit saw: it predicts class 0 with
-#: one thread and class 1 with more, so the confusion matrices (and per-class
+#: A classifier that reports the BLAS and OpenMP threads its fit saw: it predicts class 0
+#: with one thread and class 1 with more, so the confusion matrices (and per-class
 #: scores) differ if the thread count does.
 PROBE = """
 import numpy as np
@@ -35,8 +35,8 @@ class ThreadProbe:
         self.random_state = random_state
 
     def fit(self, x, y):
-        blas = [i["num_threads"] for i in threadpool_info() if i["user_api"] == "blas"]
-        self.label_ = 0 if max(blas) == 1 else 1
+        pools = [i["num_threads"] for i in threadpool_info() if i["user_api"] in ("blas", "openmp")]
+        self.label_ = 0 if max(pools) == 1 else 1
         return self
 
     def predict(self, x):
@@ -68,6 +68,23 @@ def test_mlp_predictions_do_not_depend_on_the_callers_blas_threads(registry):
         with threadpool_limits(limits=threads):
             predictions.append(fit_predict(registry.classifier("mlp"), *arguments)[0])
     np.testing.assert_array_equal(predictions[0], predictions[1])
+
+
+def test_a_fit_runs_on_one_thread_whatever_the_caller_allows(fake_dist):
+    """The suite runs with one thread (tests/conftest.py), so the caller allows two here:
+    ``fit_predict`` lowers every BLAS and OpenMP pool to one for the fit, and gives the
+    caller's back after."""
+    fake_dist("thread-probe", {"thread-probe": "thread_probe"}, {"thread_probe": PROBE})
+    registry = build_registry()
+    rng = np.random.default_rng(0)
+    x, y = rng.normal(size=(20, 3)), np.repeat([0, 1], 10)
+    with threadpool_limits(limits=2):
+        allowed = {i["num_threads"] for i in threadpool_info()}
+        fit_predict(registry.classifier("lr"), 0, x, y, x)  # a fit before the probe's import
+        predicted, _ = fit_predict(registry.classifier("thread-probe"), 0, x, y, x)
+        after = {i["num_threads"] for i in threadpool_info()}
+    assert allowed == after == {2}
+    assert (predicted == 0).all()
 
 
 def test_jobs_1_jobs_2_and_dask_give_identical_results_for_every_classifier(
