@@ -35,7 +35,7 @@ def test_each_tests_cpu_is_counted_where_it_was_spent_and_summed_per_file(tmp_pa
     out = tmp_path / "cpu"
     run = subprocess.run(
         [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", "-p",
-         "tools.testcpu.plugin", "--test-cpu", str(out), str(tmp_path / "test_costs.py")],
+         "tools.testcpu.plugin", f"--test-cpu={out}", str(tmp_path / "test_costs.py")],
         cwd=ROOT, capture_output=True, text=True, check=False,
     )  # fmt: skip
     assert run.returncode == 0, run.stdout + run.stderr
@@ -44,6 +44,10 @@ def test_each_tests_cpu_is_counted_where_it_was_spent_and_summed_per_file(tmp_pa
     assert rows["test_burns"]["self"] >= 0.38 and rows["test_burns"]["children"] < 0.1
     assert rows["test_child_burns"]["children"] >= 0.38 and rows["test_child_burns"]["self"] < 0.3
     assert rows["test_sleeps"]["wall"] >= 0.3 and rows["test_sleeps"]["self"] < 0.1
+
+    again = subprocess.run(run.args, cwd=ROOT, capture_output=True, text=True, check=False)
+    assert again.returncode == 4 and "holds an earlier run's rows" in again.stderr, again.stderr
+    assert len((out / "main.jsonl").read_text().splitlines()) == 3  # nothing added
 
     summary = subprocess.run(
         [sys.executable, "-m", "tools.testcpu", str(out), "--top", "5"],

@@ -56,7 +56,7 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     if not rows:
         print(f"error: {args.folder}: no test rows; run pytest with -p tools.testcpu.plugin "
-              f"--test-cpu {args.folder} first", file=sys.stderr)  # fmt: skip
+              f"--test-cpu={args.folder} first", file=sys.stderr)  # fmt: skip
         return 2
     own = sum(r["self"] for r in rows)
     children = sum(r["children"] for r in rows)

@@ -19,6 +19,19 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     )
 
 
+def pytest_configure(config: pytest.Config) -> None:
+    """Refuse a folder that holds an earlier run's rows: this run's would be added to them."""
+    folder = config.getoption("--test-cpu")
+    if folder is None or hasattr(config, "workerinput"):  # checked once, in the main process
+        return
+    if any(Path(folder).glob("*.jsonl")):
+        raise pytest.UsageError(
+            f"--test-cpu {folder}: holds an earlier run's rows, which this run's would be "
+            "added to; give a new folder (as --test-cpu=DIR: an existing folder given after "
+            "a space is also taken for a test path)"
+        )
+
+
 def _cpu() -> tuple[float, float]:
     own = resource.getrusage(resource.RUSAGE_SELF)
     children = resource.getrusage(resource.RUSAGE_CHILDREN)
