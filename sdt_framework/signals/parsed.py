@@ -66,11 +66,6 @@ class Kept(Generic[T]):
             self._make_room(0, keep_last=True)
         return value
 
-    def clear(self) -> None:
-        """Forget every kept value."""
-        with self._lock:
-            self._kept.clear()
-
     def _make_room(self, incoming: int, keep_last: bool = False) -> None:
         """Drop the least recently used until ``incoming`` more bytes fit (the lock held)."""
         floor = 1 if keep_last else 0
