@@ -4,11 +4,15 @@ a sweep, the suite) does not parse the catalogue again; another text is another 
 from __future__ import annotations
 
 import pytest
-from sdt_sensors_catalog import part_files
 
 from sdt_framework.errors import SpecFileError
 from sdt_framework.parts import files
 from sdt_framework.registry import build_registry
+
+pytestmark = pytest.mark.catalog
+part_files = pytest.importorskip(
+    "sdt_sensors_catalog", reason="install plugins/sensors-catalog (make does)"
+).part_files
 
 
 @pytest.fixture
