@@ -195,7 +195,7 @@ def estimate(plan: Plan, stored_runs: int = 0, *, alone_if_short: bool = True) -
     draws = 0
     rows = 0
     for recording in plan.recordings:
-        samples = recording.n_acquisitions * recording.samples_per_acquisition
+        samples = recording.total_samples
         for sensor in plan.sensors:
             n = _draws(sensor, config.repeats, config.units)
             draws += n
@@ -239,14 +239,12 @@ def estimate(plan: Plan, stored_runs: int = 0, *, alone_if_short: bool = True) -
         and feature_seconds + run_seconds < ALONE_BELOW_SECONDS
     )
     workers = 1 if alone else workers
-    largest = max(
-        (r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings), default=0
-    )
+    largest = max((r.total_samples for r in plan.recordings), default=0)
     remote = config.backend == "dask" and config.scheduler  # the workers are elsewhere
     here = 0 if remote or workers == 1 else workers  # worker processes on this machine
     # samples the dataset keeps between reads, in each process that reads (a small
     # dataset's whole samples at most)
-    samples = sum(r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings)
+    samples = sum(r.total_samples for r in plan.recordings)
     kept = plan.dataset.kept_at_most(samples) * (1 if workers == 1 else here)
     fixed = PROCESS_BYTES * (1 + here) + workers * CHAIN_BYTES_PER_SAMPLE * largest + kept
     memory = fixed + BLOCK_BYTES * blocks + ROW_BYTES * rows + RUN_BYTES * runs

@@ -104,6 +104,6 @@ def recordings_longest_first(jobs: Sequence[FeatureJob]) -> list[FeatureJob]:
     """Featurisation jobs by their recording's samples, largest first (stable)."""
     return sorted(
         jobs,
-        key=lambda j: j.recording.n_acquisitions * j.recording.samples_per_acquisition,
+        key=lambda j: j.recording.total_samples,
         reverse=True,
     )

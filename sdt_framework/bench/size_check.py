@@ -113,8 +113,8 @@ def recording_problem(plan: Plan, size: Estimate) -> str | None:
     room = host.available_memory()
     if size.fixed_bytes <= room or not plan.recordings:
         return None
-    largest = max(plan.recordings, key=lambda r: r.n_acquisitions * r.samples_per_acquisition)
-    samples = largest.n_acquisitions * largest.samples_per_acquisition
+    largest = max(plan.recordings, key=lambda r: r.total_samples)
+    samples = largest.total_samples
     try:
         on_disk = f", {human_bytes(os.stat(largest.source).st_size)}"
     except (OSError, ValueError):  # generated data: no file

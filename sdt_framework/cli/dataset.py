@@ -108,9 +108,7 @@ def synth(
             dataset.acquisitions,
             dataset.duration,
             recordings[0].sampling_rate_hz,  # the generator's rate, as its recordings give it
-            dataset.kept_at_most(
-                sum(r.n_acquisitions * r.samples_per_acquisition for r in recordings)
-            ),
+            dataset.kept_at_most(sum(r.total_samples for r in recordings)),
         )
         check_output_folder(out, "--out")
         check_cost("dataset synth", cost, yes, "--duration or --acquisitions", folder=out)

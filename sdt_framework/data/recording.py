@@ -106,6 +106,11 @@ class Recording:
     speed_percent: float | None = None
     speed_source: str = ""
 
+    @property
+    def total_samples(self) -> int:
+        """Samples in all: ``n_acquisitions * samples_per_acquisition``."""
+        return self.n_acquisitions * self.samples_per_acquisition
+
     def load(self) -> np.ndarray:
         """Read the signal: float64 array (n_acquisitions, samples_per_acquisition) in g.
 

@@ -88,7 +88,7 @@ def sweep_estimate(probe: Plan, base: SensorSpec, points: int) -> Estimate:
 
 def _extra(plan: Plan, size: Estimate, report: bool) -> dict[str, float]:
     """What a sweep's run costs beyond the benchmark's estimate, by phase (seconds)."""
-    samples = sum(r.n_acquisitions * r.samples_per_acquisition for r in plan.recordings)
+    samples = sum(r.total_samples for r in plan.recordings)
     extra = {
         "recordings read or generated": samples / SYNTH_SAMPLES_PER_S / size.workers,
         "process start": START_SECONDS,
